@@ -1,0 +1,18 @@
+// Part 1, step 1: the ray a camera shoots through a point of its image.
+#pragma once
+
+#include <glm/vec2.hpp>
+
+#include "math/ray.h"
+#include "scene/camera.h"
+
+namespace pt {
+
+/// The world-space camera ray through film point `film`, where (0,0) is the image's bottom-left
+/// corner and (1,1) its top-right. `image_aspect` is width/height of the image being rendered:
+/// the horizontal field of view is the camera's, the vertical one follows from the aspect.
+/// `lens` is a uniform sample in [0,1)^2 for the thin lens; it is ignored by a pinhole camera
+/// (lens_radius 0). The direction is unit length; tmin is 0 and tmax the camera's far plane.
+Ray generate_camera_ray(const Camera& camera, float image_aspect, glm::vec2 film, glm::vec2 lens);
+
+}  // namespace pt

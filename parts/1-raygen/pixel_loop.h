@@ -1,0 +1,28 @@
+// Part 1, step 4: a pixel's value as the average of the radiance of its camera rays.
+#pragma once
+
+#include <functional>
+
+#include <glm/vec3.hpp>
+
+#include "math/ray.h"
+#include "sampling/rng.h"
+#include "scene/camera.h"
+
+namespace pt {
+
+/// Radiance arriving along a camera ray (normals at Part 1, light from Part 3 on).
+using RadianceFn = std::function<glm::vec3(const Ray& ray, Rng& rng)>;
+
+/// Which pixel of which image.
+struct PixelRef {
+  int x = 0, y = 0;            ///< column from the left, row from the top
+  int width = 1, height = 1;   ///< image size in pixels
+};
+
+/// The estimate of pixel `px`: with samples == 1, the one ray through the pixel's centre;
+/// otherwise `samples` rays through uniformly jittered points of the pixel, averaged.
+glm::vec3 estimate_pixel(const Camera& camera, const PixelRef& px, int samples, Rng& rng,
+                         const RadianceFn& radiance);
+
+}  // namespace pt

@@ -1,0 +1,29 @@
+// Part 1's plumbing: primitives of a Scene intersected one by one (brute force).
+#pragma once
+
+#include <cstdint>
+
+#include "geometry/ray_query.h"
+#include "scene/scene.h"
+
+namespace pt {
+
+/// Intersects primitive `primitive` of `scene` (triangle or sphere) with `ray`; on a hit with
+/// tmin < t < tmax fills *hit completely: point, its error bound, normals, material.
+bool intersect_primitive(const Scene& scene, uint32_t primitive, const Ray& ray, SurfaceHit* hit);
+
+/// Whether primitive `primitive` blocks `ray` somewhere in (tmin, tmax).
+bool primitive_occludes(const Scene& scene, uint32_t primitive, const Ray& ray);
+
+/// Every primitive tested for every ray: slow, simple, and the yardstick the BVH is checked by.
+class BruteForce final : public RayQuery {
+ public:
+  explicit BruteForce(const Scene& scene) : scene_(scene) {}
+  bool intersect(const Ray& ray, SurfaceHit* hit) const override;
+  bool occluded(const Ray& ray) const override;
+
+ private:
+  const Scene& scene_;
+};
+
+}  // namespace pt

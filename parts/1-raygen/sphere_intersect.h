@@ -1,0 +1,15 @@
+// Part 1, step 3: where a ray meets a sphere, with a quadratic that does not cancel.
+#pragma once
+
+#include "math/ray.h"
+#include "scene/scene.h"
+
+namespace pt {
+
+/// The nearest t with ray.tmin < t < ray.tmax where `ray` meets the sphere's surface, if any,
+/// in *t. Both roots count (a ray that starts inside hits the far side). The quadratic is solved
+/// without catastrophic cancellation, so a far sphere or a near-tangent ray still gets an
+/// accurate t.
+bool intersect_sphere(const Ray& ray, const Sphere& sphere, float* t);
+
+}  // namespace pt

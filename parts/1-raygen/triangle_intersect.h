@@ -1,0 +1,23 @@
+// Part 1, step 2: where a ray meets a triangle, watertight.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include "geometry/surface_hit.h"
+#include "math/ray.h"
+
+namespace pt {
+
+/// Whether `ray` meets triangle (p0, p1, p2) at some ray.tmin < t < ray.tmax; on a hit, fills
+/// *hit with t and the barycentric coordinates (b0 for p0). Watertight: a ray through an edge or a
+/// vertex shared by two triangles hits at least one of them, whatever the rounding (Woop, Benthin
+/// and Wald 2013). Both sides of the triangle count. Degenerate triangles are never hit.
+bool intersect_triangle(const Ray& ray, const glm::vec3& p0, const glm::vec3& p1,
+                        const glm::vec3& p2, TriangleHit* hit);
+
+/// The shading normal at a hit: the corners' normals weighted by the hit's barycentric
+/// coordinates, normalised.
+glm::vec3 interpolate_normal(const TriangleHit& hit, const glm::vec3& n0, const glm::vec3& n1,
+                             const glm::vec3& n2);
+
+}  // namespace pt

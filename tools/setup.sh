@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Installs every package the project builds, tests and documents with (Debian packages only).
+# Safe to run again: apt-get skips what is already there.
+set -euo pipefail
+
+packages=(
+  build-essential cmake ninja-build pkg-config git
+  libglm-dev            # vector maths
+  libopenimageio-dev openimageio-tools   # PNG/EXR output, image diffs
+  libcgal-dev libgmp-dev libmpfr-dev     # exact kernel for the intersection tests
+  libgtest-dev libgmock-dev              # unit tests
+  libtbb-dev            # parallel tiles
+  libpugixml-dev        # COLLADA reader
+  libcli11-dev          # command lines
+  nlohmann-json3-dev    # bench output, manifests, grader results
+  libcmark-dev          # write-up Markdown
+  libembree-dev         # optional: bench --embree comparison only
+  chromium              # headless browser test of the write-up
+)
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ "${#missing[@]}" -gt 0 ]; then
+  echo "setup: installing ${missing[*]}" >&2
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+# KaTeX (offline math in the write-up) comes from the npm registry; a machine that already has
+# Node.js with npm (as the CI image does) keeps it, since Debian's npm conflicts with that build.
+if ! command -v npm >/dev/null 2>&1; then
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends nodejs npm >/dev/null
+fi
+echo "setup: all packages present" >&2
