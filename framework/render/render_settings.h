@@ -1,0 +1,41 @@
+// Everything a render is asked to do, as the pathtracer command line states it.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace pt {
+
+/// Which acceleration structure answers the rays.
+enum class AccelKind { bvh_sah, bvh_median, brute_force };
+
+/// What the image shows: light (the full estimator), or the debug view of surface normals
+/// (what the course's renderer shows before lighting exists).
+enum class ShadingMode { light, normals };
+
+/// The settings of one render; the defaults are the course renderer's.
+struct RenderSettings {
+  int width = 480, height = 360;        ///< -r W H
+  int samples_per_pixel = 1;            ///< -s
+  int light_samples = 1;                ///< -l: samples per area light
+  int max_depth = 1;                    ///< -m: 0 emitted only, 1 direct, 2 one bounce, ...
+  int threads = 0;                      ///< -t: 0 means every core
+  bool hemisphere_sampling = false;     ///< -H: uniform hemisphere instead of light sampling
+  bool adaptive = false;                ///< -a given
+  int adaptive_batch = 32;              ///< -a BATCH
+  float adaptive_tolerance = 0.05f;     ///< -a TOL
+  std::string environment_map;          ///< -e: image-based infinite light
+  float lens_radius = 0.0f;             ///< -b: thin-lens aperture
+  float focal_distance = -1.0f;         ///< -d: focal distance; negative keeps the scene's
+  bool has_cell = false;                ///< -p given: render only a cell
+  int cell_x = 0, cell_y = 0, cell_w = 0, cell_h = 0;  ///< -p X Y DX DY
+  uint64_t seed = 0;                    ///< --seed: same seed, same image
+  AccelKind accel = AccelKind::bvh_sah; ///< --bvh sah|median|none
+  int bvh_leaf_size = 4;                ///< --leaf-size
+  ShadingMode shading = ShadingMode::light;
+  bool russian_roulette = true;         ///< --no-rr turns it off
+  bool mis = false;                     ///< --mis: combine light and BSDF samples
+  int only_bounce = -1;                 ///< --bounce K: only light that took exactly K bounces
+};
+
+}  // namespace pt
