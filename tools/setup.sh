@@ -8,6 +8,7 @@ packages=(
   libglm-dev            # vector maths
   libopenimageio-dev openimageio-tools   # PNG/EXR output, image diffs
   libcgal-dev libgmp-dev libmpfr-dev     # exact kernel for the intersection tests
+  libboost-dev          # Boost.Math distributions for the chi-square and t tests
   libgtest-dev libgmock-dev              # unit tests
   libtbb-dev            # parallel tiles
   libpugixml-dev        # COLLADA reader

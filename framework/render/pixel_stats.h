@@ -1,0 +1,28 @@
+// The running statistics of one pixel's samples: mean and variance, without cancellation.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+namespace pt {
+
+/// Mean and sum of squared deviations of a pixel's samples, updated one sample at a time with
+/// Welford's method in double precision: the naive Σx² − (Σx)²/n cancels catastrophically for a
+/// bright pixel with little noise, this does not. The variance feeds the statistical comparison
+/// of renders; adaptive sampling (Part 5) keeps its own illuminance statistics the same way.
+struct PixelStats {
+  long count = 0;
+  glm::dvec3 mean{0.0};
+  glm::dvec3 m2{0.0};
+
+  void add(const glm::vec3& sample) {
+    ++count;
+    glm::dvec3 x(sample);
+    glm::dvec3 delta = x - mean;
+    mean += delta / double(count);
+    m2 += delta * (x - mean);
+  }
+  /// Unbiased sample variance of one sample (0 with fewer than two samples).
+  glm::dvec3 variance() const { return count > 1 ? m2 / double(count - 1) : glm::dvec3(0.0); }
+};
+
+}  // namespace pt
