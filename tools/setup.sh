@@ -37,4 +37,11 @@ if ! command -v npm >/dev/null 2>&1; then
   $SUDO apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends nodejs npm >/dev/null
 fi
+# The write-up's npm packages (KaTeX; playwright-core for the browser test) at the locked versions.
+website_dir="$(cd "$(dirname "$0")/../website" && pwd)"
+if [ ! -f "$website_dir/node_modules/.package-lock.json" ] ||
+   ! cmp -s "$website_dir/package-lock.json" "$website_dir/node_modules/.installed-lock"; then
+  (cd "$website_dir" && npm ci --no-audit --no-fund --loglevel=error >/dev/null &&
+   cp package-lock.json node_modules/.installed-lock)
+fi
 echo "setup: all packages present" >&2
