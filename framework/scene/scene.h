@@ -43,7 +43,8 @@ struct Scene {
   std::vector<Material> materials;
   std::vector<Light> lights;
   Camera camera;
-  bool has_camera = false;
+  bool has_camera = false;            ///< false: the loader placed a default camera framing the bounds
+  std::string up_axis = "Y_UP";       ///< the file's <up_axis> (X_UP, Y_UP or Z_UP), kept as is
 
   uint32_t primitive_count() const { return uint32_t(triangles.size() + spheres.size()); }
   bool is_triangle(uint32_t primitive) const { return primitive < triangles.size(); }
