@@ -1,0 +1,175 @@
+// The block t-test on synthetic renders whose truth is known: the same truth with other random
+// numbers passes at the stated rate, a biased one fails, broken input fails.
+#include "stats/block_test.h"
+
+#include <cmath>
+#include <limits>
+
+#include <gtest/gtest.h>
+
+#include "render/pixel_stats.h"
+#include "sampling/rng.h"
+
+namespace pt {
+namespace {
+
+constexpr int kWidth = 64, kHeight = 48;
+
+/// The true image: a black band on the left (no noise at all there, as a background), a
+/// coloured ramp elsewhere.
+glm::vec3 truth(int x, int y) {
+  if (x < 16) return glm::vec3(0.0f);
+  float u = float(x) / kWidth, v = float(y) / kHeight;
+  return {0.2f + 0.6f * u, 0.5f, 0.3f + 0.4f * v};
+}
+
+/// A render of the truth times `scale` with `samples` samples per pixel, each sample uniform on
+/// [0, 2·value] per channel (a noisy, non-Gaussian estimator whose mean is the value).
+RenderEstimate synthetic(int samples, uint64_t seed, float scale = 1.0f) {
+  RenderEstimate e;
+  e.width = kWidth;
+  e.height = kHeight;
+  for (int y = 0; y < kHeight; ++y) {
+    for (int x = 0; x < kWidth; ++x) {
+      Rng rng(seed, uint64_t(y) * kWidth + x);
+      glm::vec3 value = truth(x, y) * scale;
+      PixelStats stats;
+      for (int s = 0; s < samples; ++s) {
+        stats.add(2.0f * value * glm::vec3(rng.next_float(), rng.next_float(), rng.next_float()));
+      }
+      e.mean.push_back(glm::vec3(stats.mean));
+      e.variance.push_back(glm::vec3(stats.variance()));
+      e.count.push_back(float(stats.count));
+    }
+  }
+  return e;
+}
+
+TEST(FrameworkBlockTest, SameTruthOtherSeedsPassAtTheStatedRate) {
+  // Bonferroni at α/36 (12 blocks × 3 channels), with 9 noisy blocks × 3 independent channels
+  // (the black band cannot differ), makes the false alarm rate 1 − (1 − α/36)^27 ≈ 0.037 for
+  // α = 0.05: about 37 of 1000 seeds (standard deviation 6); 10000 seeds gave 3.1%, a little
+  // under, as Bonferroni is. Seeds are fixed, so the count is too; the bounds are where a
+  // correct test lands with probability > 0.999.
+  BlockTestOptions options;
+  options.alpha = 0.05;
+  int failures = 0;
+  const int trials = 1000;
+  for (int trial = 0; trial < trials; ++trial) {
+    // A new reference each time too: with one fixed reference the trials share its noise and the
+    // rate drifts from α by chance.
+    BlockTestResult r =
+        block_t_test(synthetic(8, 2000 + trial), synthetic(32, 100000 + trial), options);
+    EXPECT_EQ(r.blocks, 12);
+    EXPECT_FALSE(r.nonfinite);
+    if (!r.pass) ++failures;
+  }
+  EXPECT_GE(failures, 18) << "the test fires too rarely: its p-values are too large";
+  EXPECT_LE(failures, 60) << "the test fires too often on correct renders";
+  RecordProperty("false_alarms_of_1000", failures);
+}
+
+TEST(FrameworkBlockTest, DefaultAlphaPassesAnotherSeed) {
+  BlockTestResult r = block_t_test(synthetic(16, 7), synthetic(64, 8));
+  EXPECT_TRUE(r.pass) << r.summary;
+  EXPECT_NE(r.summary.find("all 12 blocks match"), std::string::npos) << r.summary;
+  EXPECT_NEAR(r.overall_ratio.y, 1.0f, 0.02f);
+}
+
+TEST(FrameworkBlockTest, FivePercentTooDarkFailsAndSaysSo) {
+  for (uint64_t seed : {11u, 12u, 13u}) {
+    BlockTestResult r = block_t_test(synthetic(32, seed, 0.95f), synthetic(64, seed + 100));
+    EXPECT_FALSE(r.pass) << r.summary;
+    ASSERT_FALSE(r.failing.empty());
+    EXPECT_LT(r.failing.front().t, 0.0);
+    EXPECT_NE(r.summary.find("too dark"), std::string::npos) << r.summary;
+    EXPECT_NEAR(r.overall_ratio.y, 0.95f, 0.02f);
+  }
+}
+
+TEST(FrameworkBlockTest, TwiceTooBrightNamesTheBlockAndTheRatio) {
+  BlockTestResult r = block_t_test(synthetic(16, 21, 2.0f), synthetic(64, 22));
+  EXPECT_FALSE(r.pass);
+  ASSERT_FALSE(r.failing.empty());
+  // Every lit block differs; the black band's blocks (column 0) stay black and do not.
+  EXPECT_EQ(r.failing.size(), 9u);
+  for (const BlockDifference& b : r.failing) {
+    EXPECT_NE(b.block_x, 0);
+    EXPECT_NEAR(b.ratio.y, 2.0f, 0.1f);
+  }
+  EXPECT_NE(r.summary.find("% too bright"), std::string::npos) << r.summary;
+  EXPECT_NE(r.summary.find("block ("), std::string::npos) << r.summary;
+}
+
+TEST(FrameworkBlockTest, NaNFailsEvenInOnePixel) {
+  RenderEstimate render = synthetic(16, 31);
+  render.mean[5 * kWidth + 40].x = std::numeric_limits<float>::quiet_NaN();
+  BlockTestResult r = block_t_test(render, synthetic(64, 32));
+  EXPECT_FALSE(r.pass);
+  EXPECT_TRUE(r.nonfinite);
+  EXPECT_NE(r.summary.find("pixel (40,5)"), std::string::npos) << r.summary;
+
+  RenderEstimate reference = synthetic(64, 32);
+  reference.variance[0].z = std::numeric_limits<float>::infinity();
+  r = block_t_test(synthetic(16, 31), reference);
+  EXPECT_FALSE(r.pass);
+  EXPECT_TRUE(r.nonfinite);
+}
+
+TEST(FrameworkBlockTest, SizeMismatchFails) {
+  RenderEstimate render = synthetic(4, 41);
+  RenderEstimate reference = synthetic(4, 42);
+  reference.width = 48;
+  reference.height = 64;
+  BlockTestResult r = block_t_test(render, reference);
+  EXPECT_FALSE(r.pass);
+  EXPECT_NE(r.summary.find("64x48"), std::string::npos) << r.summary;
+
+  render.mean.pop_back();  // says 64x48 but has one pixel fewer
+  r = block_t_test(render, synthetic(4, 42));
+  EXPECT_FALSE(r.pass);
+  EXPECT_NE(r.summary.find("malformed"), std::string::npos) << r.summary;
+}
+
+TEST(FrameworkBlockTest, ZeroVarianceExactMatchPassesAndAnyDifferenceFails) {
+  // A noiseless image (every pixel one constant sample value, as a black background or a
+  // directly seen light): identical passes without a division by zero...
+  RenderEstimate flat;
+  flat.width = kWidth;
+  flat.height = kHeight;
+  for (int i = 0; i < kWidth * kHeight; ++i) {
+    flat.mean.push_back(i % kWidth < 16 ? glm::vec3(0.0f) : glm::vec3(1.5f, 0.25f, 3.0f));
+    flat.variance.push_back(glm::vec3(0.0f));
+    flat.count.push_back(4.0f);
+  }
+  BlockTestResult same = block_t_test(flat, flat);
+  EXPECT_TRUE(same.pass) << same.summary;
+  EXPECT_FALSE(same.nonfinite);
+
+  // ...and a difference that no noise explains fails, on the lit part and on the black part.
+  RenderEstimate brighter = flat;
+  brighter.mean[10 * kWidth + 40] *= 1.01f;
+  BlockTestResult r = block_t_test(brighter, flat);
+  EXPECT_FALSE(r.pass);
+  ASSERT_EQ(r.failing.size(), 1u);
+  EXPECT_EQ(r.failing[0].block_x, 2);
+  EXPECT_EQ(r.failing[0].block_y, 0);
+  EXPECT_NE(r.summary.find("too bright"), std::string::npos) << r.summary;
+
+  RenderEstimate lit_background = flat;
+  lit_background.mean[20 * kWidth + 3] = glm::vec3(0.01f);
+  r = block_t_test(lit_background, flat);
+  EXPECT_FALSE(r.pass);
+  EXPECT_NE(r.summary.find("block (0,1) is lit where the reference is black"), std::string::npos)
+      << r.summary;
+}
+
+TEST(FrameworkBlockTest, NoisyRenderAgainstNoiselessBlackStillPasses) {
+  // The black band is noiseless in both; the lit part is noisy: zero variance in one block must
+  // not make the whole test fragile.
+  BlockTestResult r = block_t_test(synthetic(8, 51), synthetic(8, 52));
+  EXPECT_TRUE(r.pass) << r.summary;
+}
+
+}  // namespace
+}  // namespace pt
