@@ -1,0 +1,149 @@
+#include "generator/cornell_scenes.h"
+
+#include <stdexcept>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+namespace scenegen {
+namespace {
+
+// A matrix as COLLADA writes it, row by row.
+glm::mat4 rows(const std::array<float, 16>& m) { return glm::transpose(glm::make_mat4(m.data())); }
+
+// Blender's Y-up mesh data placed in the Z-up world, as the course's walls are (without the
+// round-off the course's exporter left in its matrices, so the walls stay exactly axis-aligned).
+const glm::mat4 kYUpToZUp = rows({-1, 0, 0, 0, 0, 0, 1, 0, 0, 1, 0, 0, 0, 0, 0, 1});
+
+Material diffuse(const std::string& name, const glm::vec3& albedo) {
+  Material m;
+  m.name = name;
+  m.diffuse = albedo;
+  return m;
+}
+
+void add_mesh(Document& doc, MeshGeometry geometry, const std::string& material, const glm::mat4& transform) {
+  Node n;
+  n.name = geometry.name;
+  n.transform = transform;
+  n.kind = Node::Kind::geometry;
+  n.instance = geometry.name;
+  n.material = material;
+  doc.meshes.push_back(std::move(geometry));
+  doc.nodes.push_back(std::move(n));
+}
+
+void add_sphere(Document& doc, const std::string& name, float radius, const glm::vec3& center,
+                const std::string& material) {
+  doc.spheres.push_back({name, radius});
+  Node n;
+  n.name = name;
+  n.transform = glm::translate(glm::mat4(1.0f), center);
+  n.kind = Node::Kind::geometry;
+  n.instance = name;
+  n.material = material;
+  doc.nodes.push_back(std::move(n));
+}
+
+// A wall in the box's Y-up local frame; its texcoords are Blender's placeholders, kept so the
+// walls read like the course's (three inputs per corner).
+void add_wall(Document& doc, const std::string& name, const std::array<glm::vec3, 4>& corners,
+              const glm::vec3& inward) {
+  MeshGeometry g;
+  g.name = name;
+  g.mesh = make_quad(corners[0], corners[1], corners[2], corners[3], inward);
+  g.texcoords = true;
+  add_mesh(doc, std::move(g), name, kYUpToZUp);
+}
+
+// The two spheres' places in the course's CBspheres, radius 0.3, resting on the floor.
+const glm::vec3 kBackSphere{-0.4f, 0.3f, 0.3f};
+const glm::vec3 kFrontSphere{0.4f, -0.3f, 0.3f};
+
+}  // namespace
+
+std::vector<SceneEntry> scene_entries() {
+  return {
+      {"cornell_empty", "the Cornell box alone: walls, light panel, area light, camera", true},
+      {"cornell_spheres", "the box with two diffuse spheres", true},
+      {"cornell_mirror_glass", "the box with a mirror sphere and a glass sphere (ior 1.5)", true},
+      {"cornell_coil", "the box with a closed tube coiled along a helix (smooth normals)", true},
+      {"dense_mesh", "the box with a bumpy sphere of over a million triangles", false},
+  };
+}
+
+Document cornell_box() {
+  Document doc;
+  doc.lights.push_back({"Area", glm::vec3(10.0f)});
+  doc.cameras.push_back({"Camera"});
+
+  Material light = diffuse("light", glm::vec3(0.8f));
+  light.emission = glm::vec3(10.0f);
+  doc.materials = {diffuse("ceiling", glm::vec3(0.6f)), light,
+                   diffuse("floor", glm::vec3(0.6f)),   diffuse("leftWall", {0.6f, 0.2f, 0.2f}),
+                   diffuse("rightWall", {0.2f, 0.2f, 0.6f}), diffuse("backWall", glm::vec3(0.6f))};
+
+  // The area light is a unit square scaled to the panel's 0.8 × 0.6 and placed where it is.
+  doc.nodes.push_back({"Area", rows({0.8f, 0, 0, 0, 0, 0.6f, 0, 0, 0, 0, 1, 1.49f, 0, 0, 0, 1}),
+                       Node::Kind::light, "Area", ""});
+  doc.nodes.push_back({"Camera", rows({-1, 0, 0, 0, 0, 0, 1, 3, 0, 1, 0, 0, 0, 0, 0, 1}),
+                       Node::Kind::camera, "Camera", ""});
+
+  add_wall(doc, "ceiling", {{{1, 1.5f, -1}, {-1, 1.5f, -1}, {-1, 1.5f, 1}, {1, 1.5f, 1}}}, {0, -1, 0});
+  add_wall(doc, "light", {{{0.4f, 1.49f, -0.3f}, {0.4f, 1.49f, 0.3f}, {-0.4f, 1.49f, 0.3f}, {-0.4f, 1.49f, -0.3f}}},
+           {0, -1, 0});
+  add_wall(doc, "floor", {{{1, 0, -1}, {1, 0, 1}, {-1, 0, 1}, {-1, 0, -1}}}, {0, 1, 0});
+  add_wall(doc, "leftWall", {{{-1, 1.5f, -1}, {-1, 0, -1}, {-1, 0, 1}, {-1, 1.5f, 1}}}, {1, 0, 0});
+  add_wall(doc, "rightWall", {{{1, 1.5f, 1}, {1, 0, 1}, {1, 0, -1}, {1, 1.5f, -1}}}, {-1, 0, 0});
+  add_wall(doc, "backWall", {{{1, 1.5f, -1}, {1, 0, -1}, {-1, 0, -1}, {-1, 1.5f, -1}}}, {0, 0, 1});
+  return doc;
+}
+
+Document build_scene(const std::string& name, const SceneOptions& options) {
+  Document doc = cornell_box();
+  if (name == "cornell_empty") return doc;
+  if (name == "cornell_spheres") {
+    doc.materials.push_back(diffuse("lambertian", glm::vec3(0.8f)));
+    add_sphere(doc, "Sphere1", 0.3f, kBackSphere, "lambertian");
+    add_sphere(doc, "Sphere2", 0.3f, kFrontSphere, "lambertian");
+    return doc;
+  }
+  if (name == "cornell_mirror_glass") {
+    Material mirror = diffuse("chrome", glm::vec3(0.64f));
+    mirror.model = Material::Model::mirror;
+    Material glass = diffuse("glass", glm::vec3(0.64f));
+    glass.model = Material::Model::glass;
+    glass.ior = 1.5f;
+    doc.materials.push_back(mirror);
+    doc.materials.push_back(glass);
+    add_sphere(doc, "Sphere1", 0.3f, kBackSphere, "chrome");
+    add_sphere(doc, "Sphere2", 0.3f, kFrontSphere, "glass");
+    return doc;
+  }
+  if (name == "cornell_coil") {
+    doc.materials.push_back(diffuse("coil", {0.8f, 0.6f, 0.2f}));
+    MeshGeometry g;
+    g.name = "coil";
+    g.mesh = make_coil(options.coil);
+    g.faces = MeshGeometry::Faces::triangles;
+    // The helix rises from z = 0 about the Z axis; lift it so its lowest point clears the floor.
+    add_mesh(doc, std::move(g), "coil",
+             glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, float(options.coil.tube_radius) + 0.03f)));
+    return doc;
+  }
+  if (name == "dense_mesh") {
+    doc.materials.push_back(diffuse("dense", glm::vec3(0.75f)));
+    MeshGeometry g;
+    g.name = "denseSphere";
+    g.mesh = make_dense_sphere(options.dense);
+    // Unit-radius bumpy sphere, scaled to sit on the floor in the middle of the box.
+    const float scale = 0.45f;
+    const float lift = scale * float(1.0 + options.dense.bump_amplitude) + 0.03f;
+    glm::mat4 m = glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, lift)), glm::vec3(scale));
+    add_mesh(doc, std::move(g), "dense", m);
+    return doc;
+  }
+  throw std::invalid_argument("unknown scene '" + name + "'");
+}
+
+}  // namespace scenegen
