@@ -1,0 +1,52 @@
+// Piecewise-constant distributions in 1D and 2D: what an image-based light and a mesh light
+// sample by (pixels in proportion to their power, triangles in proportion to their area).
+#pragma once
+
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+namespace pt {
+
+/// A piecewise-constant density on [0,1) with n equal cells whose weights are `func`.
+/// Negative or non-finite weights count as zero; if every weight is zero the distribution is
+/// uniform, so sampling never divides by zero.
+class Distribution1D {
+ public:
+  Distribution1D() = default;
+  explicit Distribution1D(std::vector<float> func);
+
+  int size() const { return int(func_.size()); }
+  /// Sum of the weights times the cell width: the integral of the unnormalised function.
+  float integral() const { return integral_; }
+  /// A point of [0,1) with density func(x)/integral; *pdf gets that density, *cell its cell.
+  float sample_continuous(float u, float* pdf, int* cell = nullptr) const;
+  /// A cell index with probability weight/sum; *pmf gets that probability.
+  int sample_discrete(float u, float* pmf) const;
+  float pdf_continuous(float x) const;
+  float pmf_discrete(int cell) const;
+
+ private:
+  int find_cell(float u) const;
+  std::vector<float> func_;
+  std::vector<float> cdf_;  ///< n+1 entries, cdf_[0] = 0, cdf_[n] = 1
+  float integral_ = 0.0f;
+};
+
+/// A piecewise-constant density on [0,1)^2 given on a width × height grid (row-major, row 0 at
+/// v = 0): the marginal picks a row, that row's conditional distribution picks the column.
+class Distribution2D {
+ public:
+  Distribution2D() = default;
+  Distribution2D(const std::vector<float>& func, int width, int height);
+
+  /// A point of [0,1)^2 with density func/integral; *pdf gets that density.
+  glm::vec2 sample_continuous(glm::vec2 u, float* pdf) const;
+  float pdf(glm::vec2 p) const;
+
+ private:
+  std::vector<Distribution1D> rows_;
+  Distribution1D marginal_;
+};
+
+}  // namespace pt
