@@ -56,9 +56,10 @@ void add_wall(Document& doc, const std::string& name, const std::array<glm::vec3
   add_mesh(doc, std::move(g), name, kYUpToZUp);
 }
 
-// The two spheres' places in the course's CBspheres, radius 0.3, resting on the floor.
-const glm::vec3 kBackSphere{-0.4f, 0.3f, 0.3f};
-const glm::vec3 kFrontSphere{0.4f, -0.3f, 0.3f};
+// The two spheres' places in the course's CBspheres, radius 0.3, resting on the floor. The camera
+// looks along −y with its right towards −x: one sphere is front right, the other back left.
+const glm::vec3 kFrontRightSphere{-0.4f, 0.3f, 0.3f};
+const glm::vec3 kBackLeftSphere{0.4f, -0.3f, 0.3f};
 
 }  // namespace
 
@@ -104,8 +105,8 @@ Document build_scene(const std::string& name, const SceneOptions& options) {
   if (name == "cornell_empty") return doc;
   if (name == "cornell_spheres") {
     doc.materials.push_back(diffuse("lambertian", glm::vec3(0.8f)));
-    add_sphere(doc, "Sphere1", 0.3f, kBackSphere, "lambertian");
-    add_sphere(doc, "Sphere2", 0.3f, kFrontSphere, "lambertian");
+    add_sphere(doc, "Sphere1", 0.3f, kFrontRightSphere, "lambertian");
+    add_sphere(doc, "Sphere2", 0.3f, kBackLeftSphere, "lambertian");
     return doc;
   }
   if (name == "cornell_mirror_glass") {
@@ -116,8 +117,8 @@ Document build_scene(const std::string& name, const SceneOptions& options) {
     glass.ior = 1.5f;
     doc.materials.push_back(mirror);
     doc.materials.push_back(glass);
-    add_sphere(doc, "Sphere1", 0.3f, kBackSphere, "chrome");
-    add_sphere(doc, "Sphere2", 0.3f, kFrontSphere, "glass");
+    add_sphere(doc, "Sphere1", 0.3f, kFrontRightSphere, "glass");
+    add_sphere(doc, "Sphere2", 0.3f, kBackLeftSphere, "chrome");
     return doc;
   }
   if (name == "cornell_coil") {
