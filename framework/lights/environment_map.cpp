@@ -1,0 +1,102 @@
+#include "lights/environment_map.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+#include <OpenImageIO/imageio.h>
+
+#include "sampling/warp.h"
+
+namespace pt {
+
+bool EnvironmentMap::load(const std::string& path, std::string* error) {
+  auto in = OIIO::ImageInput::open(path);
+  if (!in) {
+    *error = path + ": cannot read the environment map: " + OIIO::geterror();
+    return false;
+  }
+  const OIIO::ImageSpec& spec = in->spec();
+  if (spec.width < 2 || spec.height < 1) {
+    *error = path + ": the environment map is empty";
+    return false;
+  }
+  std::vector<float> data(size_t(spec.width) * spec.height * spec.nchannels);
+  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, data.data())) {
+    *error = path + ": cannot decode the environment map: " + in->geterror();
+    return false;
+  }
+  std::vector<glm::vec3> rgb(size_t(spec.width) * spec.height);
+  for (size_t i = 0; i < rgb.size(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      float v = data[i * spec.nchannels + std::min(c, spec.nchannels - 1)];
+      if (!std::isfinite(v) || v < 0.0f) {
+        *error = path + ": pixel " + std::to_string(i % spec.width) + "," +
+                 std::to_string(i / spec.width) + " is negative or not finite";
+        return false;
+      }
+      rgb[i][c] = v;
+    }
+  set_pixels(spec.width, spec.height, std::move(rgb));
+  return true;
+}
+
+void EnvironmentMap::set_pixels(int width, int height, std::vector<glm::vec3> rgb) {
+  width_ = width;
+  height_ = height;
+  pixels_ = std::move(rgb);
+  build_distribution();
+}
+
+void EnvironmentMap::build_distribution() {
+  // Distribution2D's row 0 is v = 0, which direction_to_uv puts at the top (+y): the same order
+  // as the image's rows.
+  std::vector<float> weight(pixels_.size());
+  for (int y = 0; y < height_; ++y) {
+    float sin_theta = std::sin(kPi * (float(y) + 0.5f) / float(height_));
+    for (int x = 0; x < width_; ++x) {
+      const glm::vec3& c = pixels_[size_t(y) * width_ + x];
+      weight[size_t(y) * width_ + x] = (0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b) * sin_theta;
+    }
+  }
+  distribution_ = Distribution2D(weight, width_, height_);
+}
+
+glm::vec2 EnvironmentMap::direction_to_uv(const glm::vec3& d) {
+  float theta = std::acos(std::clamp(d.y, -1.0f, 1.0f));
+  float phi = std::atan2(d.z, -d.x);
+  if (phi < 0) phi += 2.0f * kPi;
+  return {std::min(phi * kInv2Pi, 0x1.fffffep-1f), std::min(theta * kInvPi, 0x1.fffffep-1f)};
+}
+
+glm::vec3 EnvironmentMap::uv_to_direction(glm::vec2 uv) {
+  float phi = uv.x * 2.0f * kPi, theta = uv.y * kPi;
+  float s = std::sin(theta);
+  return {-s * std::cos(phi), std::cos(theta), s * std::sin(phi)};
+}
+
+glm::vec3 EnvironmentMap::radiance(const glm::vec3& dir) const {
+  if (pixels_.empty()) return glm::vec3(0.0f);
+  glm::vec2 uv = direction_to_uv(dir);
+  int x = std::clamp(int(uv.x * width_), 0, width_ - 1);
+  int y = std::clamp(int(uv.y * height_), 0, height_ - 1);
+  return pixels_[size_t(y) * width_ + x];
+}
+
+glm::vec3 EnvironmentMap::sample(glm::vec2 u, float* pdf) const {
+  float map_pdf = 0.0f;
+  glm::vec2 uv = distribution_.sample_continuous(u, &map_pdf);
+  float sin_theta = std::sin(uv.y * kPi);
+  // dω = sinθ dθ dφ = 2π² sinθ du dv.
+  *pdf = (sin_theta > 0.0f && map_pdf > 0.0f) ? map_pdf / (2.0f * kPi * kPi * sin_theta) : 0.0f;
+  return uv_to_direction(uv);
+}
+
+float EnvironmentMap::pdf(const glm::vec3& dir) const {
+  glm::vec2 uv = direction_to_uv(dir);
+  float sin_theta = std::sin(uv.y * kPi);
+  if (!(sin_theta > 0.0f)) return 0.0f;
+  return distribution_.pdf(uv) / (2.0f * kPi * kPi * sin_theta);
+}
+
+}  // namespace pt

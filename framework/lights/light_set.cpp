@@ -1,0 +1,392 @@
+#include "lights/light_set.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include "math/float_error.h"
+#include "math/frame.h"
+#include "sampling/warp.h"
+
+namespace pt {
+namespace {
+
+bool finite_positive(const glm::vec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) &&
+         (v.x > 0 || v.y > 0 || v.z > 0);
+}
+
+// Whether triangle (a, b, c) lies on parallelogram light `l`: in its plane and inside it, both
+// within a thousandth of the light's size (a classification of scene data, not a ray test).
+bool on_parallelogram(const SampledLight& l, const glm::vec3& a, const glm::vec3& b,
+                      const glm::vec3& c) {
+  const glm::vec3 n_raw = glm::cross(l.edge_u, l.edge_v);
+  const float n2 = glm::dot(n_raw, n_raw);
+  const float size = std::max(glm::length(l.edge_u), glm::length(l.edge_v));
+  const float tol = 1e-3f;
+  for (const glm::vec3& q : {a, b, c}) {
+    glm::vec3 d = q - l.corner;
+    if (std::abs(glm::dot(d, l.normal)) > tol * size) return false;
+    float s = glm::dot(glm::cross(d, l.edge_v), n_raw) / n2;
+    float t = glm::dot(glm::cross(l.edge_u, d), n_raw) / n2;
+    if (s < -tol || s > 1 + tol || t < -tol || t > 1 + tol) return false;
+  }
+  return true;
+}
+
+// Parameter t > 0 where the ray (o, w) meets the parallelogram, or 0 for a miss.
+float hit_parallelogram(const SampledLight& l, const glm::vec3& o, const glm::vec3& w) {
+  const glm::vec3 n_raw = glm::cross(l.edge_u, l.edge_v);
+  float denom = glm::dot(w, n_raw);
+  if (denom == 0.0f) return 0.0f;
+  float t = glm::dot(l.corner - o, n_raw) / denom;
+  if (!(t > 0.0f) || !std::isfinite(t)) return 0.0f;
+  glm::vec3 d = o + t * w - l.corner;
+  const float n2 = glm::dot(n_raw, n_raw);
+  float s = glm::dot(glm::cross(d, l.edge_v), n_raw) / n2;
+  float v = glm::dot(glm::cross(l.edge_u, d), n_raw) / n2;
+  return (s >= 0 && s <= 1 && v >= 0 && v <= 1) ? t : 0.0f;
+}
+
+// Attenuation of a point or spot light at distance d: the inverse square of a physical point
+// light, divided by the COLLADA attenuation polynomial (1 with the file's defaults).
+float point_falloff(const Light* light, float d) {
+  float att = 1.0f;
+  if (light)
+    att = light->constant_attenuation + light->linear_attenuation * d +
+          light->quadratic_attenuation * d * d;
+  float denom = d * d * att;
+  return denom > 0.0f && std::isfinite(denom) ? 1.0f / denom : 0.0f;
+}
+
+// 1 − cosθmax of the cone a sphere of radius r subtends from distance² dist2 (> r²), computed
+// as sin²/(1 + cos) so that small, far spheres do not round it to zero.
+float sphere_cone_one_minus_cos(float r, float dist2) {
+  float sin2 = std::min(1.0f, r * r / dist2);
+  return sin2 / (1.0f + safe_sqrt(1.0f - sin2));
+}
+
+}  // namespace
+
+LightSet::LightSet(const Scene& scene, const EnvironmentMap* environment)
+    : scene_(scene), environment_(environment) {
+  for (const Light& light : scene.lights) {
+    SampledLight s;
+    s.source = &light;
+    s.radiance = light.radiance;
+    if (light.kind == LightKind::ambient) {
+      if (finite_positive(light.radiance)) ambient_ += light.radiance;
+      continue;
+    }
+    if (!finite_positive(light.radiance)) continue;
+    switch (light.kind) {
+      case LightKind::point: s.kind = SampledLightKind::point; break;
+      case LightKind::spot: s.kind = SampledLightKind::spot; break;
+      case LightKind::directional:
+        s.kind = SampledLightKind::directional;
+        if (!(glm::length(light.direction) > 0.0f)) continue;
+        break;
+      case LightKind::area: {
+        s.kind = SampledLightKind::parallelogram;
+        s.edge_u = light.edge_u;
+        s.edge_v = light.edge_v;
+        s.corner = light.position - 0.5f * light.edge_u - 0.5f * light.edge_v;
+        glm::vec3 n = glm::cross(light.edge_u, light.edge_v);
+        s.area = glm::length(n);
+        if (!(s.area > 0.0f) || !std::isfinite(s.area)) continue;  // nothing to emit from
+        s.normal = n / s.area;
+        if (glm::dot(s.normal, light.direction) < 0.0f) s.normal = -s.normal;
+        break;
+      }
+      case LightKind::ambient: break;
+    }
+    lights_.push_back(std::move(s));
+  }
+
+  primitive_light_.assign(scene.primitive_count(), -1);
+  const size_t scene_lights = lights_.size();
+  std::map<uint32_t, SampledLight> meshes;  // by material, so the order is deterministic
+  std::map<uint32_t, std::vector<float>> mesh_areas;
+  for (uint32_t i = 0; i < scene.triangles.size(); ++i) {
+    const Triangle& tri = scene.triangles[i];
+    if (tri.material >= scene.materials.size() || !scene.materials[tri.material].emissive())
+      continue;
+    const glm::vec3 &a = scene.positions[tri.v[0]], &b = scene.positions[tri.v[1]],
+                    &c = scene.positions[tri.v[2]];
+    int panel_of = -1;
+    for (size_t k = 0; k < scene_lights && panel_of < 0; ++k)
+      if (lights_[k].kind == SampledLightKind::parallelogram && on_parallelogram(lights_[k], a, b, c))
+        panel_of = int(k);
+    if (panel_of >= 0) {
+      lights_[panel_of].has_panel = true;
+      primitive_light_[i] = panel_of;
+      continue;
+    }
+    float area = 0.5f * glm::length(glm::cross(b - a, c - a));
+    if (!(area > 0.0f) || !std::isfinite(area)) continue;  // degenerate: never hit, never sampled
+    SampledLight& m = meshes[tri.material];
+    m.kind = SampledLightKind::mesh;
+    m.radiance = scene.materials[tri.material].emission;
+    m.triangles.push_back(i);
+    mesh_areas[tri.material].push_back(area);
+    m.area += area;
+  }
+  for (auto& [material, m] : meshes) {
+    m.triangle_pick = Distribution1D(mesh_areas[material]);
+    for (uint32_t prim : m.triangles) primitive_light_[prim] = int(lights_.size());
+    lights_.push_back(std::move(m));
+  }
+  for (uint32_t i = 0; i < scene.spheres.size(); ++i) {
+    const Sphere& sp = scene.spheres[i];
+    if (sp.material >= scene.materials.size() || !scene.materials[sp.material].emissive()) continue;
+    if (!(sp.radius > 0.0f) || !std::isfinite(sp.radius)) continue;
+    SampledLight s;
+    s.kind = SampledLightKind::sphere;
+    s.radiance = scene.materials[sp.material].emission;
+    s.sphere = i;
+    s.area = 4.0f * kPi * sp.radius * sp.radius;
+    primitive_light_[scene.triangles.size() + i] = int(lights_.size());
+    lights_.push_back(std::move(s));
+  }
+  if (finite_positive(ambient_)) {
+    SampledLight s;
+    s.kind = SampledLightKind::uniform_environment;
+    s.radiance = ambient_;
+    lights_.push_back(std::move(s));
+    has_environment_ = true;
+  } else {
+    ambient_ = glm::vec3(0.0f);
+  }
+  if (environment_) {
+    SampledLight s;
+    s.kind = SampledLightKind::image_environment;
+    lights_.push_back(std::move(s));
+    has_environment_ = true;
+  }
+}
+
+bool LightSet::only_delta() const {
+  return std::all_of(lights_.begin(), lights_.end(),
+                     [](const SampledLight& l) { return l.is_delta(); });
+}
+
+glm::vec3 LightSet::environment_radiance(const glm::vec3& dir) const {
+  glm::vec3 L = ambient_;
+  if (environment_) L += environment_->radiance(dir);
+  return L;
+}
+
+LightSample LightSet::sample(int index, const SurfaceHit& hit, glm::vec2 u) const {
+  const SampledLight& l = lights_[index];
+  LightSample ls;
+  const glm::vec3 p = hit.p;
+  auto finish_at = [&](const glm::vec3& q, const glm::vec3& q_error, const glm::vec3& n) {
+    glm::vec3 d = q - p;
+    float dist = glm::length(d);
+    if (!(dist > 0.0f) || !std::isfinite(dist)) return false;
+    ls.wi = d / dist;
+    ls.distance = dist;
+    ls.p = q;
+    ls.p_error = q_error;
+    ls.n = n;
+    return true;
+  };
+  switch (l.kind) {
+    case SampledLightKind::point:
+    case SampledLightKind::spot: {
+      const glm::vec3 pos = l.source->position;
+      if (!finish_at(pos, glm::vec3(0.0f), glm::vec3(0.0f))) return {};
+      float scale = point_falloff(l.source, ls.distance);
+      if (l.kind == SampledLightKind::spot) {
+        float cos_angle = glm::dot(-ls.wi, glm::normalize(l.source->direction));
+        float cos_half = std::cos(glm::radians(0.5f * l.source->falloff_degrees));
+        if (!(cos_angle >= cos_half)) return {};
+        if (l.source->falloff_exponent > 0.0f)
+          scale *= std::pow(std::max(0.0f, cos_angle), l.source->falloff_exponent);
+      }
+      ls.L = l.radiance * scale;
+      ls.pdf = 1.0f;
+      ls.delta = true;
+      return ls;
+    }
+    case SampledLightKind::directional:
+      ls.wi = -glm::normalize(l.source->direction);
+      ls.L = l.radiance;
+      ls.pdf = 1.0f;
+      ls.delta = true;
+      return ls;
+    case SampledLightKind::parallelogram: {
+      glm::vec3 q = l.corner + u.x * l.edge_u + u.y * l.edge_v;
+      glm::vec3 err = gamma(5) * (glm::abs(l.corner) + glm::abs(u.x * l.edge_u) +
+                                  glm::abs(u.y * l.edge_v));
+      if (!finish_at(q, err, l.normal)) return {};
+      float cos_l = glm::dot(-ls.wi, l.normal);
+      if (!(cos_l > 0.0f)) return {};  // the back of a one-sided light
+      ls.pdf = area_to_solid_angle_pdf(1.0f / l.area, ls.distance, cos_l);
+      ls.L = ls.pdf > 0.0f ? l.radiance : glm::vec3(0.0f);
+      return ls;
+    }
+    case SampledLightKind::mesh: {
+      float pdf_c;
+      int cell;
+      float x = l.triangle_pick.sample_continuous(u.x, &pdf_c, &cell);
+      float u0 = std::clamp(x * float(l.triangle_pick.size()) - float(cell), 0.0f, 1.0f);
+      const Triangle& tri = scene_.triangles[l.triangles[cell]];
+      const glm::vec3 &a = scene_.positions[tri.v[0]], &b = scene_.positions[tri.v[1]],
+                      &c = scene_.positions[tri.v[2]];
+      glm::vec3 bary = square_to_uniform_triangle({u0, u.y});
+      glm::vec3 q = bary.x * a + bary.y * b + bary.z * c;
+      glm::vec3 err = gamma(6) * (glm::abs(bary.x * a) + glm::abs(bary.y * b) + glm::abs(bary.z * c));
+      glm::vec3 n = glm::cross(b - a, c - a);
+      float twice_area = glm::length(n);
+      if (!(twice_area > 0.0f)) return {};
+      n /= twice_area;
+      if (!finish_at(q, err, n)) return {};
+      // Picking the triangle with probability area/total and a point uniformly on it: 1/total.
+      ls.pdf = area_to_solid_angle_pdf(1.0f / l.area, ls.distance, glm::dot(ls.wi, n));
+      ls.L = ls.pdf > 0.0f ? l.radiance : glm::vec3(0.0f);
+      return ls;
+    }
+    case SampledLightKind::sphere: {
+      const Sphere& s = scene_.spheres[l.sphere];
+      glm::vec3 dc = s.center - p;
+      float dist2 = glm::dot(dc, dc);
+      float r = s.radius;
+      glm::vec3 q;
+      if (dist2 > r * r) {
+        // Outside: directions of the cone the sphere subtends, then where each meets it.
+        float one_minus_cos = sphere_cone_one_minus_cos(r, dist2);
+        if (!(one_minus_cos > 0.0f)) return {};
+        Frame frame(dc / std::sqrt(dist2));
+        float z = 1.0f - u.x * one_minus_cos;
+        float sr = safe_sqrt(1.0f - z * z), phi = 2.0f * kPi * u.y;
+        glm::vec3 w = frame.to_world({sr * std::cos(phi), sr * std::sin(phi), z});
+        double bd = glm::dot(glm::dvec3(w), glm::dvec3(dc));
+        double disc = double(r) * r - (double(dist2) - bd * bd);
+        double t = disc > 0.0 ? bd - std::sqrt(disc) : bd;  // tangent rays touch at bd
+        q = p + float(t) * w;
+        glm::vec3 n = glm::normalize(q - s.center);
+        if (!finish_at(q, gamma(5) * (glm::abs(q) + glm::vec3(r)), n)) return {};
+        ls.wi = w;  // the cone's direction, whatever the rounding of q
+        ls.pdf = 1.0f / (2.0f * kPi * one_minus_cos);
+      } else {
+        // Inside: uniform points of the surface, seen from within.
+        glm::vec3 n = square_to_uniform_sphere(u);
+        q = s.center + r * n;
+        if (!finish_at(q, gamma(5) * (glm::abs(s.center) + glm::vec3(r)), n)) return {};
+        ls.pdf = area_to_solid_angle_pdf(1.0f / l.area, ls.distance, glm::dot(ls.wi, n));
+      }
+      ls.L = ls.pdf > 0.0f && std::isfinite(ls.pdf) ? l.radiance : glm::vec3(0.0f);
+      if (!std::isfinite(ls.pdf)) ls.pdf = 0.0f;
+      return ls;
+    }
+    case SampledLightKind::uniform_environment:
+      ls.wi = square_to_uniform_sphere(u);
+      ls.pdf = uniform_sphere_pdf();
+      ls.L = l.radiance;
+      return ls;
+    case SampledLightKind::image_environment:
+      ls.wi = environment_->sample(u, &ls.pdf);
+      ls.L = ls.pdf > 0.0f ? environment_->radiance(ls.wi) : glm::vec3(0.0f);
+      return ls;
+  }
+  return ls;
+}
+
+float LightSet::pdf(int index, const SurfaceHit& hit, const glm::vec3& wi,
+                    const SurfaceHit* on_light) const {
+  const SampledLight& l = lights_[index];
+  switch (l.kind) {
+    case SampledLightKind::point:
+    case SampledLightKind::spot:
+    case SampledLightKind::directional:
+      return 0.0f;
+    case SampledLightKind::parallelogram: {
+      float t = hit_parallelogram(l, hit.p, wi);
+      float cos_l = glm::dot(-wi, l.normal);
+      if (!(t > 0.0f) || !(cos_l > 0.0f)) return 0.0f;
+      return area_to_solid_angle_pdf(1.0f / l.area, t, cos_l);
+    }
+    case SampledLightKind::mesh: {
+      if (!on_light || light_of_primitive(on_light->primitive) != index) return 0.0f;
+      return area_to_solid_angle_pdf(1.0f / l.area, glm::length(on_light->p - hit.p),
+                                     glm::dot(wi, on_light->ng));
+    }
+    case SampledLightKind::sphere: {
+      if (!on_light || light_of_primitive(on_light->primitive) != index) return 0.0f;
+      const Sphere& s = scene_.spheres[l.sphere];
+      glm::vec3 dc = s.center - hit.p;
+      float dist2 = glm::dot(dc, dc);
+      if (dist2 > s.radius * s.radius)
+        return 1.0f / (2.0f * kPi * sphere_cone_one_minus_cos(s.radius, dist2));
+      return area_to_solid_angle_pdf(1.0f / l.area, glm::length(on_light->p - hit.p),
+                                     glm::dot(wi, on_light->ng));
+    }
+    case SampledLightKind::uniform_environment:
+      return on_light ? 0.0f : uniform_sphere_pdf();
+    case SampledLightKind::image_environment:
+      return on_light ? 0.0f : environment_->pdf(wi);
+  }
+  return 0.0f;
+}
+
+glm::vec3 LightSet::emitted(int index, const SurfaceHit& on_light, const glm::vec3& wi) const {
+  const SampledLight& l = lights_[index];
+  switch (l.kind) {
+    case SampledLightKind::parallelogram:
+      return glm::dot(-wi, l.normal) > 0.0f ? l.radiance : glm::vec3(0.0f);
+    case SampledLightKind::mesh:
+    case SampledLightKind::sphere:
+      return l.radiance;
+    case SampledLightKind::uniform_environment:
+      return l.radiance;
+    case SampledLightKind::image_environment:
+      return environment_->radiance(wi);
+    default:
+      (void)on_light;
+      return glm::vec3(0.0f);
+  }
+}
+
+bool LightSet::unoccluded(const RayQuery& query, const Ray& ray, int index) const {
+  const SampledLight& l = lights_[index];
+  if (l.kind == SampledLightKind::parallelogram && l.has_panel) {
+    // The panel lies on the light, within rounding: the nearest hit may be the panel itself,
+    // which is the light's own face, not a blocker.
+    SurfaceHit h;
+    return !query.intersect(ray, &h) || light_of_primitive(h.primitive) == index;
+  }
+  return !query.occluded(ray);
+}
+
+Ray spawn_ray(const SurfaceHit& hit, const glm::vec3& w) {
+  Ray r;
+  r.o = offset_ray_origin(hit.p, hit.p_error, hit.ng, w);
+  r.d = w;
+  r.tmin = 0.0f;
+  r.tmax = std::numeric_limits<float>::infinity();
+  return r;
+}
+
+Ray spawn_shadow_ray(const SurfaceHit& hit, const LightSample& ls) {
+  Ray r = spawn_ray(hit, ls.wi);
+  if (!std::isfinite(ls.distance)) return r;
+  glm::vec3 target = ls.p;
+  if (ls.n != glm::vec3(0.0f)) target = offset_ray_origin(ls.p, ls.p_error, ls.n, -ls.wi);
+  glm::vec3 d = target - r.o;
+  float len = glm::length(d);
+  if (!(len > 0.0f)) {
+    r.tmax = 0.0f;  // nothing between: the empty interval is never occluded
+    return r;
+  }
+  r.d = d / len;
+  // Stop short of the target by the rounding of its distance, so the end never reaches back
+  // into the light point's error box.
+  r.tmax = len * (1.0f - gamma(4));
+  return r;
+}
+
+}  // namespace pt
