@@ -1,0 +1,88 @@
+#include "3-direct/direct_lighting.h"
+
+#include <algorithm>
+
+#include "sampling/warp.h"
+#include "student/todo.h"
+
+namespace pt {
+
+glm::vec3 zero_bounce_radiance(const LightingContext& ctx, const Ray& ray, const SurfaceHit& hit) {
+  // BEGIN SOLUTION
+  (void)ray;
+  return hit.material < ctx.scene.materials.size() ? ctx.scene.materials[hit.material].emission
+                                                   : glm::vec3(0.0f);
+  // END SOLUTION
+  // STUDENT: return the emission of the hit's material (ctx.scene.materials[hit.material]).
+  PT_STUDENT_TODO("part 3", "zero_bounce_radiance");
+  (void)ctx, (void)ray, (void)hit;
+  return glm::vec3(0.0f);
+}
+
+glm::vec3 estimate_direct_hemisphere(const LightingContext& ctx, const ShadingPoint& sp, Rng& rng) {
+  // BEGIN SOLUTION
+  const int n = std::max(1, ctx.light_samples);
+  glm::vec3 sum(0.0f);
+  for (int i = 0; i < n; ++i) {
+    glm::vec3 wi = square_to_uniform_hemisphere(rng.next_2d());
+    Ray r = spawn_ray(sp.hit, sp.frame.to_world(wi));
+    SurfaceHit h;
+    glm::vec3 Le = ctx.query.intersect(r, &h) ? zero_bounce_radiance(ctx, r, h)
+                                              : ctx.lights.environment_radiance(r.d);
+    sum += sp.bsdf->f(sp.wo, wi) * Le * wi.z / uniform_hemisphere_pdf(wi);
+  }
+  return sum / float(n);
+  // END SOLUTION
+  // STUDENT: ctx.light_samples times: draw wi = square_to_uniform_hemisphere(rng.next_2d()) in the
+  // local frame, shoot spawn_ray(sp.hit, sp.frame.to_world(wi)); what it sees is the
+  // zero_bounce_radiance of its hit, or ctx.lights.environment_radiance(direction) if it escapes.
+  // Add f(wo, wi)·Le·cosθ / pdf and return the average.
+  PT_STUDENT_TODO("part 3", "estimate_direct_hemisphere");
+  (void)ctx, (void)sp, (void)rng;
+  return glm::vec3(0.0f);
+}
+
+glm::vec3 estimate_direct_importance(const LightingContext& ctx, const ShadingPoint& sp, Rng& rng) {
+  // BEGIN SOLUTION
+  glm::vec3 L(0.0f);
+  const auto& lights = ctx.lights.lights();
+  for (int k = 0; k < int(lights.size()); ++k) {
+    const int n = lights[k].is_delta() ? 1 : std::max(1, ctx.light_samples);
+    glm::vec3 sum(0.0f);
+    for (int i = 0; i < n; ++i) {
+      LightSample ls = ctx.lights.sample(k, sp.hit, rng.next_2d());
+      glm::vec3 wi = sp.frame.to_local(ls.wi);
+      if (!(ls.pdf > 0.0f) || !(wi.z > 0.0f)) continue;
+      glm::vec3 f = sp.bsdf->f(sp.wo, wi);
+      if (f == glm::vec3(0.0f) || ls.L == glm::vec3(0.0f)) continue;  // no shadow ray for nothing
+      if (ctx.lights.unoccluded(ctx.query, spawn_shadow_ray(sp.hit, ls), k))
+        sum += f * ls.L * wi.z / ls.pdf;
+    }
+    L += sum / float(n);
+  }
+  return L;
+  // END SOLUTION
+  // STUDENT: for each light k of ctx.lights.lights(): take n = 1 sample if it is_delta(), else
+  // ctx.light_samples. For each, ls = ctx.lights.sample(k, sp.hit, rng.next_2d()); skip it if
+  // ls.pdf is 0 or wi = sp.frame.to_local(ls.wi) is below the surface; if
+  // ctx.lights.unoccluded(ctx.query, spawn_shadow_ray(sp.hit, ls), k), add f·ls.L·cosθ/ls.pdf.
+  // Average each light's samples, sum over lights.
+  PT_STUDENT_TODO("part 3", "estimate_direct_importance");
+  (void)ctx, (void)sp, (void)rng;
+  return glm::vec3(0.0f);
+}
+
+glm::vec3 one_bounce_radiance(const LightingContext& ctx, const ShadingPoint& sp, Rng& rng) {
+  // BEGIN SOLUTION
+  if (sp.bsdf->is_delta()) return glm::vec3(0.0f);
+  return ctx.hemisphere ? estimate_direct_hemisphere(ctx, sp, rng)
+                        : estimate_direct_importance(ctx, sp, rng);
+  // END SOLUTION
+  // STUDENT: zero for a specular BSDF (sp.bsdf->is_delta()); otherwise the hemisphere estimate
+  // if ctx.hemisphere, else the importance one.
+  PT_STUDENT_TODO("part 3", "one_bounce_radiance");
+  (void)ctx, (void)sp, (void)rng;
+  return glm::vec3(0.0f);
+}
+
+}  // namespace pt

@@ -1,0 +1,28 @@
+// Part 3: light that reaches the camera straight from an emitter, or after one reflection.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include "3-direct/shading_point.h"
+#include "sampling/rng.h"
+
+namespace pt {
+
+/// Light the surface hit by `ray` emits back along it (zero-bounce radiance).
+glm::vec3 zero_bounce_radiance(const LightingContext& ctx, const Ray& ray, const SurfaceHit& hit);
+
+/// Direct light reflected at `sp` towards the viewer, estimated with ctx.light_samples uniform
+/// directions of the hemisphere: what each direction's ray sees emitted (or the environment,
+/// when it escapes), times f·cosθ, divided by the density 1/2π.
+glm::vec3 estimate_direct_hemisphere(const LightingContext& ctx, const ShadingPoint& sp, Rng& rng);
+
+/// Direct light reflected at `sp`, estimated by sampling the lights: ctx.light_samples samples
+/// of each area light (one of a delta light), each unblocked sample's f·L·cosθ divided by its
+/// density and averaged per light.
+glm::vec3 estimate_direct_importance(const LightingContext& ctx, const ShadingPoint& sp, Rng& rng);
+
+/// Direct light at `sp` by the estimator ctx asks for (hemisphere or light sampling); zero for
+/// a specular surface, which no light sample can reach.
+glm::vec3 one_bounce_radiance(const LightingContext& ctx, const ShadingPoint& sp, Rng& rng);
+
+}  // namespace pt

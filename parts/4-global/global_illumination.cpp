@@ -1,0 +1,75 @@
+#include "4-global/global_illumination.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "3-direct/direct_lighting.h"
+#include "4-global/mis.h"
+#include "student/todo.h"
+
+namespace pt {
+
+glm::vec3 direct_radiance(const LightingContext& ctx, const ShadingPoint& sp, Rng& rng) {
+  return ctx.mis ? estimate_direct_mis(ctx, sp, rng) : one_bounce_radiance(ctx, sp, rng);
+}
+
+glm::vec3 at_least_one_bounce_radiance(const LightingContext& ctx, const ShadingPoint& sp,
+                                       int depth, Rng& rng) {
+  // BEGIN SOLUTION
+  const bool all = ctx.only_bounce < 0;
+  const int last = all ? ctx.max_depth : std::min(ctx.max_depth, ctx.only_bounce);
+  glm::vec3 L(0.0f);
+  if (all || ctx.only_bounce == depth) L += direct_radiance(ctx, sp, rng);
+  const bool specular = sp.bsdf->is_delta();
+  if (depth > last || (depth == last && !specular)) return L;
+  glm::vec3 wi;
+  float pdf = 0.0f;
+  glm::vec3 f = sp.bsdf->sample_f(sp.wo, rng.next_2d(), &wi, &pdf);
+  if (!(pdf > 0.0f)) return L;
+  glm::vec3 weight = f * std::abs(wi.z) / pdf;
+  float q = 1.0f;
+  if (ctx.russian_roulette && depth >= 2) {
+    q = std::min(0.95f, std::max({weight.x, weight.y, weight.z}));
+    if (!(q > 0.0f) || rng.next_float() >= q) return L;
+  }
+  Ray r = spawn_ray(sp.hit, sp.frame.to_world(wi));
+  SurfaceHit h;
+  const bool emission_counts = specular && (all || ctx.only_bounce == depth);
+  glm::vec3 Li(0.0f);
+  if (!ctx.query.intersect(r, &h)) {
+    if (emission_counts) Li = ctx.lights.environment_radiance(r.d);
+  } else {
+    if (emission_counts) Li = zero_bounce_radiance(ctx, r, h);
+    if (depth < last) Li += at_least_one_bounce_radiance(ctx, ShadingPoint(ctx.scene, r, h), depth + 1, rng);
+  }
+  return L + weight * Li / q;
+  // END SOLUTION
+  // STUDENT: add direct_radiance(ctx, sp, rng) (if this bounce is wanted). Unless depth has
+  // reached ctx.max_depth, sample the BSDF (sp.bsdf->sample_f), weight = f·|cosθ|/pdf; from the
+  // second bounce on, continue only with probability q (Russian roulette) and divide by q. Trace
+  // spawn_ray(sp.hit, world direction); at its hit add at_least_one_bounce_radiance of the next
+  // ShadingPoint at depth + 1 (and its emission if sp is specular), times the weight.
+  PT_STUDENT_TODO("part 4", "at_least_one_bounce_radiance");
+  (void)ctx, (void)sp, (void)depth, (void)rng;
+  return glm::vec3(0.0f);
+}
+
+glm::vec3 estimate_global_illumination(const LightingContext& ctx, const Ray& ray, Rng& rng) {
+  // BEGIN SOLUTION
+  const bool zero_wanted = ctx.only_bounce <= 0;
+  SurfaceHit hit;
+  if (!ctx.query.intersect(ray, &hit))
+    return zero_wanted ? ctx.lights.environment_radiance(ray.d) : glm::vec3(0.0f);
+  glm::vec3 L = zero_wanted ? zero_bounce_radiance(ctx, ray, hit) : glm::vec3(0.0f);
+  if (ctx.max_depth < 1 || ctx.only_bounce == 0) return L;
+  return L + at_least_one_bounce_radiance(ctx, ShadingPoint(ctx.scene, ray, hit), 1, rng);
+  // END SOLUTION
+  // STUDENT: intersect the camera ray; if it escapes return the environment's radiance. Else
+  // return zero_bounce_radiance plus (if ctx.max_depth >= 1) at_least_one_bounce_radiance of the
+  // hit's ShadingPoint at depth 1. With ctx.only_bounce = K, keep only the K-bounce term.
+  PT_STUDENT_TODO("part 4", "estimate_global_illumination");
+  (void)ctx, (void)ray, (void)rng;
+  return glm::vec3(0.0f);
+}
+
+}  // namespace pt

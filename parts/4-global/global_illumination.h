@@ -1,0 +1,29 @@
+// Part 4: global illumination, light that reaches the camera after any number of bounces.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include "3-direct/shading_point.h"
+#include "math/ray.h"
+#include "sampling/rng.h"
+
+namespace pt {
+
+/// Direct light at `sp` by the estimator ctx asks for: MIS with ctx.mis, else Part 3's
+/// one_bounce_radiance.
+glm::vec3 direct_radiance(const LightingContext& ctx, const ShadingPoint& sp, Rng& rng);
+
+/// Light leaving `sp` towards the viewer after at least one bounce, where `sp` is the path's
+/// vertex number `depth` (the camera ray's hit is 1): the direct light there (which took
+/// `depth` bounces), plus, while depth < ctx.max_depth, what a BSDF-sampled ray brings back
+/// from the next vertex, with Russian roulette from the second bounce on. After a specular
+/// vertex the next surface's emission counts too, since no light sample could reach it.
+/// With ctx.only_bounce = K ≥ 0, only light that took exactly K bounces is kept.
+glm::vec3 at_least_one_bounce_radiance(const LightingContext& ctx, const ShadingPoint& sp,
+                                       int depth, Rng& rng);
+
+/// Radiance arriving along a camera ray: the emission it sees (or the environment), plus the
+/// light reflected there after at least one bounce, up to ctx.max_depth bounces.
+glm::vec3 estimate_global_illumination(const LightingContext& ctx, const Ray& ray, Rng& rng);
+
+}  // namespace pt

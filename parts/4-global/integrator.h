@@ -1,0 +1,45 @@
+// The radiance function a render calls per camera ray, built from the settings and the scene.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include <glm/vec3.hpp>
+
+#include "3-direct/shading_point.h"
+#include "geometry/ray_query.h"
+#include "lights/environment_map.h"
+#include "lights/light_set.h"
+#include "render/render_settings.h"
+#include "sampling/rng.h"
+#include "scene/scene.h"
+
+namespace pt {
+
+/// Owns the scene's LightSet (and environment map) and answers radiance per camera ray. When
+/// the scene has nothing that emits (no light, no emissive surface, no environment) it shows the
+/// surface normals instead of a black image, and traces no shadow rays.
+class Integrator {
+ public:
+  /// Builds one for `scene` answered by `query` (both must outlive it). Returns null and a
+  /// message naming the file in *error if the environment map cannot be read.
+  static std::unique_ptr<Integrator> create(const RenderSettings& settings, const Scene& scene,
+                                            const RayQuery& query, std::string* error);
+
+  glm::vec3 radiance(const Ray& ray, Rng& rng) const;
+  bool shows_normals() const { return normals_; }
+  const LightSet& lights() const { return *lights_; }
+  const LightingContext& context() const { return *ctx_; }
+
+ private:
+  Integrator() = default;
+  std::unique_ptr<EnvironmentMap> environment_;
+  std::unique_ptr<LightSet> lights_;
+  std::unique_ptr<LightingContext> ctx_;
+  bool normals_ = false;
+};
+
+/// The debug view: the shading normal mapped from [−1, 1] to [0, 1]; black where nothing is hit.
+glm::vec3 normal_shading(const RayQuery& query, const Ray& ray);
+
+}  // namespace pt

@@ -1,0 +1,75 @@
+#include "4-global/mis.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "3-direct/direct_lighting.h"
+
+namespace pt {
+
+float power_heuristic(int n_a, float pdf_a, int n_b, float pdf_b) {
+  float a = float(n_a) * pdf_a, b = float(n_b) * pdf_b;
+  if (std::isinf(a * a)) return 1.0f;
+  float denom = a * a + b * b;
+  return denom > 0.0f ? (a * a) / denom : 0.0f;
+}
+
+namespace {
+
+// Whether a BSDF-sampled ray can reach light l at all.
+bool hittable(const SampledLight& l) {
+  if (l.is_delta()) return false;
+  if (l.kind == SampledLightKind::parallelogram) return l.has_panel;
+  return true;
+}
+
+}  // namespace
+
+glm::vec3 estimate_direct_mis(const LightingContext& ctx, const ShadingPoint& sp, Rng& rng) {
+  if (sp.bsdf->is_delta()) return glm::vec3(0.0f);
+  const auto& lights = ctx.lights.lights();
+  const int ns = std::max(1, ctx.light_samples);
+  glm::vec3 L(0.0f);
+  for (int k = 0; k < int(lights.size()); ++k) {
+    const int n = lights[k].is_delta() ? 1 : ns;
+    glm::vec3 sum(0.0f);
+    for (int i = 0; i < n; ++i) {
+      LightSample ls = ctx.lights.sample(k, sp.hit, rng.next_2d());
+      glm::vec3 wi = sp.frame.to_local(ls.wi);
+      if (!(ls.pdf > 0.0f) || !(wi.z > 0.0f)) continue;
+      glm::vec3 f = sp.bsdf->f(sp.wo, wi);
+      if (f == glm::vec3(0.0f) || ls.L == glm::vec3(0.0f)) continue;
+      if (!ctx.lights.unoccluded(ctx.query, spawn_shadow_ray(sp.hit, ls), k)) continue;
+      float w = hittable(lights[k]) ? power_heuristic(n, ls.pdf, ns, sp.bsdf->pdf(sp.wo, wi)) : 1.0f;
+      sum += f * ls.L * wi.z * (w / ls.pdf);
+    }
+    L += sum / float(n);
+  }
+  // BSDF samples: each ray reaches at most one light (or every environment light at once).
+  glm::vec3 sum(0.0f);
+  for (int j = 0; j < ns; ++j) {
+    glm::vec3 wi;
+    float pdf_b = 0.0f;
+    glm::vec3 f = sp.bsdf->sample_f(sp.wo, rng.next_2d(), &wi, &pdf_b);
+    if (!(pdf_b > 0.0f) || !(wi.z > 0.0f) || f == glm::vec3(0.0f)) continue;
+    Ray r = spawn_ray(sp.hit, sp.frame.to_world(wi));
+    SurfaceHit h;
+    auto add = [&](int k, const SurfaceHit* on_light) {
+      int n = lights[k].is_delta() ? 1 : ns;
+      float pdf_l = ctx.lights.pdf(k, sp.hit, r.d, on_light);
+      if (!(pdf_l > 0.0f)) return;  // a ray the light's own samples could never produce
+      glm::vec3 Le = on_light ? ctx.lights.emitted(k, *on_light, r.d) : ctx.lights.emitted(k, h, r.d);
+      sum += f * Le * wi.z * (power_heuristic(ns, pdf_b, n, pdf_l) / pdf_b);
+    };
+    if (ctx.query.intersect(r, &h)) {
+      int k = ctx.lights.light_of_primitive(h.primitive);
+      if (k >= 0 && hittable(lights[k])) add(k, &h);
+    } else {
+      for (int k = 0; k < int(lights.size()); ++k)
+        if (lights[k].is_infinite()) add(k, nullptr);
+    }
+  }
+  return L + sum / float(ns);
+}
+
+}  // namespace pt

@@ -1,0 +1,23 @@
+// Beyond the course: direct light by multiple importance sampling of lights and of the BSDF.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include "3-direct/shading_point.h"
+#include "sampling/rng.h"
+
+namespace pt {
+
+/// Power heuristic (Veach 1997, β = 2) for a sample of a strategy taken n_a times with density
+/// pdf_a, against one taken n_b times with density pdf_b.
+float power_heuristic(int n_a, float pdf_a, int n_b, float pdf_b);
+
+/// Direct light at `sp` from ctx.light_samples light samples per light (one per delta light)
+/// and ctx.light_samples BSDF samples, each weighted by the power heuristic, so that whichever
+/// strategy suits the light (a big dim light for the BSDF, a small bright one for the light)
+/// dominates. A BSDF sample counts when its ray reaches a light the LightSet can also sample
+/// (an emitter, a panel of an area light, or the environment); area lights without a panel
+/// cannot be hit, so their light samples keep weight 1.
+glm::vec3 estimate_direct_mis(const LightingContext& ctx, const ShadingPoint& sp, Rng& rng);
+
+}  // namespace pt
