@@ -94,7 +94,7 @@ class ColladaReader {
     pugi::xml_node a = n;
     int hops = 0;
     while (!a.attribute("id") && (a = a.parent()) && a.type() == pugi::node_element &&
-           std::string_view(a.name()) != "COLLADA" && ++hops <= 3)
+           std::string_view(a.name()) != "COLLADA" && ++hops <= 6)
       s += " in " + tag(a);
     size_t line = line_of(n);
     if (line) s += " (line " + std::to_string(line) + ")";
