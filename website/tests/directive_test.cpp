@@ -1,0 +1,35 @@
+// Directive attributes and pathtracer flags are read the way they are written.
+#include "directive.h"
+
+#include <gtest/gtest.h>
+
+using pt::web::DirectiveError;
+using pt::web::merge_flags;
+using pt::web::parse_directive;
+using pt::web::split_flags;
+
+TEST(WebsiteDirective, ReadsNameAndQuotedAttributes) {
+  auto d = parse_directive("render scene=a.dae flags=\"-s 64 -m 5\" caption='at $s = 64$'");
+  EXPECT_EQ(d.name, "render");
+  EXPECT_EQ(d.get("scene"), "a.dae");
+  EXPECT_EQ(d.get("flags"), "-s 64 -m 5");
+  EXPECT_EQ(d.get("caption"), "at $s = 64$");
+  EXPECT_EQ(d.get("missing", "x"), "x");
+}
+
+TEST(WebsiteDirective, RejectsWhatItCannotRead) {
+  EXPECT_THROW(parse_directive("render scene=a.dae oops"), DirectiveError);
+  EXPECT_THROW(parse_directive("render flags=\"-s 4"), DirectiveError);
+  EXPECT_THROW(parse_directive("render scene=a scene=b"), DirectiveError);
+}
+
+TEST(WebsiteDirective, SplitsFlagsLikeAShell) {
+  EXPECT_EQ(split_flags("  -s 64  -r 160 120 -e 'my sky.exr'"),
+            (std::vector<std::string>{"-s", "64", "-r", "160", "120", "-e", "my sky.exr"}));
+}
+
+TEST(WebsiteDirective, CellFlagsReplaceSharedOnesOfTheSameName) {
+  EXPECT_EQ(merge_flags("-t 0 -r 160 120 -s 4", "-r 64 48 -m 5"), "-t 0 -r 64 48 -s 4 -m 5");
+  EXPECT_EQ(merge_flags("-d -1.5 -b 0.1", "-d -2"), "-d -2 -b 0.1");
+  EXPECT_EQ(merge_flags("", "-H"), "-H");
+}
