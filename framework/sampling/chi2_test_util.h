@@ -98,23 +98,17 @@ inline Chi2Result chi2_direction_test(const DirectionSampler& sample, const Dire
   expected[cells] = std::max(0.0, 1.0 - r.pdf_integral);
   for (double& e : expected) e *= double(opt.samples);
 
-  // Pool small cells, smallest first, until the pool itself is large enough (Nori's rule).
+  // Pool small cells, smallest first (Nori's rule).
   std::vector<int> order(cells + 1);
   for (int i = 0; i <= cells; ++i) order[i] = i;
   std::sort(order.begin(), order.end(), [&](int a, int b) { return expected[a] < expected[b]; });
   double pool_obs = 0.0, pool_exp = 0.0, stat = 0.0;
   int used = 0;
   for (int i : order) {
-    if (expected[i] == 0.0) {
-      if (observed[i] > 0) {  // a sample where the density says none can be: certain failure
-        r.p_value = 0.0;
-        r.statistic = INFINITY;
-        r.summary = "samples fall where the claimed density is zero";
-        return r;
-      }
-      continue;
-    }
-    if (expected[i] < opt.min_expected) {
+    // The smallest cells form one pool until it is expected to hold min_expected samples. A
+    // cell the quadrature found empty may still hold a sliver of the domain (an edge of a
+    // light): it joins the pool, where samples far beyond the pool's expectation still fail.
+    if (expected[i] < opt.min_expected || pool_exp < opt.min_expected) {
       pool_obs += observed[i];
       pool_exp += expected[i];
     } else {
@@ -125,6 +119,11 @@ inline Chi2Result chi2_direction_test(const DirectionSampler& sample, const Dire
   if (pool_exp > 0.0) {
     stat += (pool_obs - pool_exp) * (pool_obs - pool_exp) / pool_exp;
     ++used;
+  } else if (pool_obs > 0.0) {  // samples where the density says none can be: certain failure
+    r.p_value = 0.0;
+    r.statistic = INFINITY;
+    r.summary = "samples fall where the claimed density is zero";
+    return r;
   }
   r.statistic = stat;
   r.dof = std::max(1, used - 1);
