@@ -14,8 +14,13 @@ struct SurfaceHit {
   float t = 0.0f;
   glm::vec3 p{0.0f};
   glm::vec3 p_error{0.0f};
-  glm::vec3 ng{0.0f, 0.0f, 1.0f};  ///< geometric normal, unit length, as the primitive winds
-  glm::vec3 n{0.0f, 0.0f, 1.0f};   ///< shading normal, unit length, on ng's side
+  /// Geometric normal, unit length: a sphere's outward normal; a triangle's winding normal,
+  /// flipped when needed to the side of its interpolated vertex normals (the modeller's normals
+  /// say which side is outside).
+  glm::vec3 ng{0.0f, 0.0f, 1.0f};
+  /// Shading normal, unit length, in ng's hemisphere: the interpolated vertex normals, or ng
+  /// when the mesh has none.
+  glm::vec3 n{0.0f, 0.0f, 1.0f};
   uint32_t primitive = 0;
   uint32_t material = 0;
 };

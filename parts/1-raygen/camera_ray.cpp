@@ -1,11 +1,44 @@
 #include "1-raygen/camera_ray.h"
 
+#include <cmath>
+#include <limits>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
+#include <glm/trigonometric.hpp>
+
 #include "student/todo.h"
 
 namespace pt {
 
 Ray generate_camera_ray(const Camera& camera, float image_aspect, glm::vec2 film, glm::vec2 lens) {
   // BEGIN SOLUTION
+  // The sensor sits at z = -1, so its half-extents are the tangents of the half angles.
+  const float half_w = std::tan(0.5f * glm::radians(camera.hfov_degrees));
+  const float half_h = half_w / image_aspect;
+  const glm::vec3 sensor((2.0f * film.x - 1.0f) * half_w, (2.0f * film.y - 1.0f) * half_h, -1.0f);
+
+  glm::vec3 origin_cam(0.0f);
+  glm::vec3 dir_cam = sensor;
+  if (camera.lens_radius > 0.0f) {
+    // Every ray through this film point converges where the pinhole ray meets the focal plane
+    // z = -focal_distance; the lens point is uniform on the aperture disk (r = R·sqrt(u)).
+    const float r = camera.lens_radius * std::sqrt(lens.x);
+    const float phi = 2.0f * glm::pi<float>() * lens.y;
+    origin_cam = glm::vec3(r * std::cos(phi), r * std::sin(phi), 0.0f);
+    dir_cam = sensor * camera.focal_distance - origin_cam;
+  }
+  dir_cam = glm::normalize(dir_cam);
+
+  Ray ray;
+  ray.o = glm::vec3(camera.camera_to_world * glm::vec4(origin_cam, 1.0f));
+  ray.d = glm::normalize(glm::vec3(camera.camera_to_world * glm::vec4(dir_cam, 0.0f)));
+  ray.tmin = 0.0f;
+  // The far clipping plane z = -zfar, reached at zfar / cos(angle to the view axis).
+  ray.tmax = (camera.zfar > 0.0f && std::isfinite(camera.zfar))
+                 ? camera.zfar / -dir_cam.z
+                 : std::numeric_limits<float>::infinity();
+  return ray;
   // END SOLUTION
   // STUDENT: place the point `film` on the sensor plane z = -1 of the camera's own space (its
   // half-width is tan(hfov/2), its half-height that divided by image_aspect), turn the direction
