@@ -1,0 +1,167 @@
+#include "compare.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "image/image.h"
+
+namespace pt::grader {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+/// The brightness ratio of a failing block as one number: the mean of its finite channels.
+double block_ratio(const BlockDifference& b) {
+  double sum = 0.0;
+  int n = 0;
+  for (int c = 0; c < 3; ++c) {
+    if (std::isfinite(b.ratio[c])) {
+      sum += b.ratio[c];
+      ++n;
+    }
+  }
+  return n ? sum / n : INFINITY;
+}
+
+/// A factor that a known mistake multiplies every pixel by, and what to look at.
+struct KnownFactor {
+  double factor;
+  const char* hint;
+};
+
+const KnownFactor kFactors[] = {
+    {0.5, "half as bright everywhere: is the pdf divided twice, or a factor 2 lost (the "
+          "hemisphere's pdf is 1/(2π))?"},
+    {2.0, "twice as bright everywhere: is a factor 2 counted twice, or the pdf of the "
+          "hemisphere taken as 1/(4π)?"},
+    {1.0 / kPi, "about 1/π as bright everywhere: is the diffuse BSDF's albedo/π divided by π "
+                "once more, or cos/pdf left out?"},
+    {kPi, "about π times too bright everywhere: did the diffuse BSDF forget its 1/π?"},
+    {1.0 / (2.0 * kPi), "about 1/(2π) as bright everywhere: is the division by the pdf left "
+                        "out (the uniform hemisphere's pdf is 1/(2π))?"},
+    {2.0 * kPi, "about 2π times too bright: is the pdf multiplied instead of divided?"},
+};
+
+}  // namespace
+
+std::string diagnose(const BlockTestResult& result) {
+  if (result.pass) return "";
+  if (result.nonfinite) {
+    return "a NaN or infinite pixel: look for a division by a zero pdf or cosine, or a "
+           "normalize() of a zero vector.";
+  }
+  if (result.failing.empty()) return "";
+  std::vector<double> ratios;
+  int darker = 0, brighter = 0;
+  for (const BlockDifference& b : result.failing) {
+    double r = block_ratio(b);
+    if (!std::isfinite(r)) {
+      ++brighter;
+      continue;
+    }
+    ratios.push_back(r);
+    (b.t < 0 ? darker : brighter)++;
+  }
+  double overall = (result.overall_ratio.x + result.overall_ratio.y + result.overall_ratio.z) / 3.0;
+  const int failing = int(result.failing.size());
+  const bool most_blocks = failing * 2 >= result.blocks;
+  if (std::isfinite(overall) && overall < 0.02) {
+    return "the image is (almost) black: is this part implemented yet? Look for \"not "
+           "implemented\" messages above.";
+  }
+  if (!ratios.empty()) {
+    std::vector<double> sorted = ratios;
+    std::sort(sorted.begin(), sorted.end());
+    double median = sorted[sorted.size() / 2];
+    double spread = 0.0;  // relative spread of the failing blocks' ratios around their median
+    for (double r : ratios) spread = std::max(spread, std::fabs(r / median - 1.0));
+    const bool uniform = spread < 0.25 && (darker == 0 || brighter == 0);
+    if (uniform && most_blocks) {
+      for (const KnownFactor& k : kFactors) {
+        if (std::fabs(std::log(median / k.factor)) < 0.12) return k.hint;
+      }
+      char buf[200];
+      if (std::fabs(median - 1.0) < 0.15) {
+        std::snprintf(buf, sizeof buf,
+                      "slightly too %s everywhere (%.1f%%): a small bias, such as a missing "
+                      "term, a clamped value or a wrong constant.",
+                      median < 1.0 ? "dark" : "bright", std::fabs(median - 1.0) * 100.0);
+      } else {
+        std::snprintf(buf, sizeof buf, "%.2f times the reference's brightness everywhere: a "
+                      "constant factor is off.", median);
+      }
+      return buf;
+    }
+    if (darker > 0 && brighter == 0) {
+      char buf[260];
+      std::snprintf(buf, sizeof buf,
+                    "too dark in %d of %d blocks by different amounts (%.0f%% to %.0f%% of the "
+                    "reference) while the rest match: light is missing in places; is the direct "
+                    "light (or one kind of bounce) left out, or are shadow rays blocked?",
+                    failing, result.blocks, sorted.front() * 100.0, sorted.back() * 100.0);
+      return buf;
+    }
+    if (brighter > 0 && darker == 0) {
+      return "too bright in places: is some light counted twice (emission added at every "
+             "bounce, or direct light added again by the next bounce)?";
+    }
+  }
+  return "too bright in some places and too dark in others: compare the diff image with the "
+         "scene (wrong normals, a flipped direction, or light leaking through surfaces?).";
+}
+
+void write_diff_image(const std::string& path, const RenderEstimate& render,
+                      const RenderEstimate& reference, const BlockTestResult& result,
+                      int block_size) {
+  const int w = reference.width, h = reference.height;
+  Image image(w, h, glm::vec3(0.5f));
+  if (render.width == w && render.height == h && render.mean.size() == size_t(w) * h) {
+    for (int y = 0; y < h; ++y) {
+      for (int x = 0; x < w; ++x) {
+        size_t i = size_t(y) * w + x;
+        float a = render.mean[i].x + render.mean[i].y + render.mean[i].z;
+        float b = reference.mean[i].x + reference.mean[i].y + reference.mean[i].z;
+        if (!std::isfinite(a)) {
+          image.at(x, y) = glm::vec3(1.0f, 0.0f, 1.0f);  // magenta: NaN or infinite
+          continue;
+        }
+        float d = (a - b) / std::max(b, 1e-3f);
+        float k = std::min(1.0f, std::fabs(d) * 2.0f);
+        glm::vec3 towards = d > 0 ? glm::vec3(1.0f, 0.1f, 0.1f) : glm::vec3(0.1f, 0.2f, 1.0f);
+        image.at(x, y) = glm::vec3(0.5f) * (1.0f - k) + towards * k;
+      }
+    }
+  }
+  for (const BlockDifference& b : result.failing) {
+    int x0 = b.block_x * block_size, y0 = b.block_y * block_size;
+    int x1 = std::min(w, x0 + block_size) - 1, y1 = std::min(h, y0 + block_size) - 1;
+    for (int x = x0; x <= x1; ++x) image.at(x, y0) = image.at(x, y1) = glm::vec3(1.0f, 0.9f, 0.0f);
+    for (int y = y0; y <= y1; ++y) image.at(x0, y) = image.at(x1, y) = glm::vec3(1.0f, 0.9f, 0.0f);
+  }
+  write_image(path, image);
+}
+
+Comparison compare_render(const RenderEstimate& render, const RenderEstimate& reference,
+                          const BlockTestOptions& options, const std::string& diff_path) {
+  Comparison c;
+  c.test = block_t_test(render, reference, options);
+  c.pass = c.test.pass;
+  c.message = c.test.summary;
+  if (c.pass) return c;
+  std::string hint = diagnose(c.test);
+  if (!hint.empty()) c.message += ": " + hint;
+  if (!diff_path.empty() && reference.width > 0 && reference.height > 0) {
+    try {
+      write_diff_image(diff_path, render, reference, c.test, options.block_size);
+      c.diff_path = diff_path;
+      c.message += " (diff image: " + diff_path + ")";
+    } catch (const std::exception& e) {
+      c.message += std::string(" (no diff image: ") + e.what() + ")";
+    }
+  }
+  return c;
+}
+
+}  // namespace pt::grader

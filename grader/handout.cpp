@@ -1,0 +1,108 @@
+#include "handout.h"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "child_process.h"
+
+namespace fs = std::filesystem;
+
+namespace pt::grader {
+namespace {
+
+std::string trimmed(const std::string& line) {
+  size_t a = line.find_first_not_of(" \t\r");
+  size_t b = line.find_last_not_of(" \t\r");
+  return a == std::string::npos ? "" : line.substr(a, b - a + 1);
+}
+
+}  // namespace
+
+bool is_solution_only(const std::string& text) {
+  std::istringstream in(text);
+  std::string line;
+  for (int i = 0; i < 5 && std::getline(in, line); ++i)
+    if (line.find("SOLUTION-ONLY FILE") != std::string::npos) return true;
+  return false;
+}
+
+std::string strip_solution(const std::string& text, const std::string& path, int* blocks) {
+  std::istringstream in(text);
+  std::string out, line;
+  int number = 0, begin_line = 0, count = 0;
+  bool inside = false;
+  while (std::getline(in, line)) {
+    ++number;
+    std::string t = trimmed(line);
+    if (t == "// BEGIN SOLUTION") {
+      if (inside)
+        throw std::runtime_error(path + ":" + std::to_string(number) +
+                                 ": BEGIN SOLUTION inside the block opened at line " +
+                                 std::to_string(begin_line));
+      inside = true;
+      begin_line = number;
+      continue;
+    }
+    if (t == "// END SOLUTION") {
+      if (!inside)
+        throw std::runtime_error(path + ":" + std::to_string(number) +
+                                 ": END SOLUTION without a BEGIN SOLUTION before it");
+      inside = false;
+      ++count;
+      continue;
+    }
+    if (!inside) out += line + "\n";
+  }
+  if (inside)
+    throw std::runtime_error(path + ":" + std::to_string(begin_line) +
+                             ": BEGIN SOLUTION is never closed by END SOLUTION");
+  if (blocks) *blocks += count;
+  // A file that did not end in a newline keeps it that way.
+  if (!text.empty() && text.back() != '\n' && !out.empty()) out.pop_back();
+  return out;
+}
+
+HandoutSummary make_handout(const std::string& source_dir, const std::string& out_dir) {
+  fs::path src = fs::absolute(source_dir), dst = fs::absolute(out_dir);
+  if (fs::exists(dst) && !fs::is_empty(dst))
+    throw std::runtime_error(out_dir + ": exists and is not empty; the handout needs a new folder");
+  ChildResult files = run_child({"git", "-C", src.string(), "ls-files", "-z"}, 60.0, {}, 64 << 20);
+  if (!files.ok())
+    throw std::runtime_error(source_dir + ": git ls-files " + files.describe() +
+                             " (the handout is made from a git checkout)\n" + files.output);
+  HandoutSummary summary;
+  std::string_view list = files.output;
+  for (size_t start = 0; start < list.size();) {
+    size_t end = list.find('\0', start);
+    if (end == std::string_view::npos) end = list.size();
+    std::string rel(list.substr(start, end - start));
+    start = end + 1;
+    if (rel.empty()) continue;
+    fs::path from = src / rel;
+    if (!fs::is_regular_file(from)) continue;  // deleted in the work tree, or a submodule
+    std::ifstream in(from, std::ios::binary);
+    std::ostringstream data;
+    data << in.rdbuf();
+    std::string text = data.str();
+    std::string ext = from.extension().string();
+    bool source = ext == ".cpp" || ext == ".h" || ext == ".hpp" || ext == ".cc";
+    if (source && is_solution_only(text)) {
+      ++summary.dropped;
+      continue;
+    }
+    if (source) text = strip_solution(text, rel, &summary.blocks);
+    fs::path to = dst / rel;
+    fs::create_directories(to.parent_path());
+    std::ofstream out(to, std::ios::binary);
+    out << text;
+    out.close();
+    if (!out) throw std::runtime_error(to.string() + ": cannot be written");
+    fs::permissions(to, fs::status(from).permissions());
+    ++summary.files;
+  }
+  return summary;
+}
+
+}  // namespace pt::grader

@@ -1,0 +1,26 @@
+// The student handout: the project without the solution code, with the stubs, references and
+// the grader.
+#pragma once
+
+#include <string>
+
+namespace pt::grader {
+
+/// What made the handout: files copied, files dropped as solution-only, solution blocks cut.
+struct HandoutSummary {
+  int files = 0, dropped = 0, blocks = 0;
+};
+
+/// A file that says "SOLUTION-ONLY FILE" in its first five lines is not handed out.
+bool is_solution_only(const std::string& text);
+
+/// Removes every block from a `// BEGIN SOLUTION` line to its `// END SOLUTION` line, the
+/// marker lines included, keeping the stub after it. Throws std::runtime_error naming `path`
+/// and the line of a marker without its pair. `blocks` counts the blocks removed.
+std::string strip_solution(const std::string& text, const std::string& path, int* blocks = nullptr);
+
+/// Copies the files git tracks in `source_dir` to `out_dir` (which must not exist yet or be
+/// empty), stripped as above. Throws std::runtime_error on any problem.
+HandoutSummary make_handout(const std::string& source_dir, const std::string& out_dir);
+
+}  // namespace pt::grader

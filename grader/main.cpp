@@ -1,0 +1,101 @@
+// grader: builds and tests a part, compares its renders with the references, prints the score;
+// `grader handout DIR` makes the student handout.
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "grade.h"
+#include "handout.h"
+#include "manifest.h"
+#include "report.h"
+
+namespace fs = std::filesystem;
+using namespace pt::grader;
+
+int main(int argc, char** argv) {
+  CLI::App app{"Grades the path tracer one part at a time against the reference images."};
+  GradeOptions options;
+  options.source_dir = GRADER_SOURCE_DIR;
+  options.build_dir = GRADER_BINARY_DIR;
+  options.pathtracer = GRADER_PATHTRACER;
+  int part = 0;
+  bool all = false, make_reference = false, no_tests = false, no_build = false;
+  std::string json_path;
+  app.add_option("--part", part, "grade part N (1-5): build it, run its tests, compare renders")
+      ->check(CLI::Range(1, 5));
+  app.add_flag("--all", all, "grade every part");
+  app.add_option("--json", json_path, "also write the Gradescope results to FILE");
+  app.add_flag("--make-reference", make_reference,
+               "render the reference images with this (complete) solution (of --part N only, if "
+               "given) and record them in the manifest");
+  app.add_option("--source", options.source_dir, "the project's folder");
+  app.add_option("--build", options.build_dir, "its CMake build tree");
+  app.add_option("--manifest", options.manifest_path, "the manifest (default reference/manifest.json)");
+  app.add_option("--pathtracer", options.pathtracer, "the renderer to run");
+  app.add_option("--out", options.out_dir, "where renders, diff images and JUnit XML go")
+      ->capture_default_str();
+  app.add_flag("--no-build", no_build, "do not build first");
+  app.add_flag("--no-tests", no_tests, "skip the CTest label, grade the renders only");
+  std::string handout_dir;
+  CLI::App* handout = app.add_subcommand("handout", "write the student handout to a new folder");
+  handout->add_option("OUT_DIR", handout_dir, "the folder to create")->required();
+  CLI11_PARSE(app, argc, argv);
+
+  if (*handout) {
+    try {
+      HandoutSummary s = make_handout(options.source_dir, handout_dir);
+      std::cout << "handout in " << handout_dir << ": " << s.files << " files, " << s.blocks
+                << " solution blocks removed, " << s.dropped << " solution-only files left out\n";
+      return 0;
+    } catch (const std::exception& e) {
+      std::cerr << "grader handout: " << e.what() << "\n";
+      return 1;
+    }
+  }
+  if (options.manifest_path.empty())
+    options.manifest_path = (fs::path(options.source_dir) / "reference" / "manifest.json").string();
+  options.build = !no_build;
+  options.run_tests = !no_tests;
+  if (options.pathtracer.empty())
+    options.pathtracer = (fs::path(options.build_dir) / "framework" / "app" / "pathtracer").string();
+
+  Manifest manifest;
+  try {
+    manifest = read_manifest(options.manifest_path);
+  } catch (const std::exception& e) {
+    std::cerr << "grader: " << e.what() << "\n";
+    return 2;
+  }
+  if (make_reference) return make_references(manifest, part, options) ? 0 : 1;
+  if (!all && part == 0) {
+    std::cerr << "grader: say which part (--part N) or --all\n" << app.help();
+    return 2;
+  }
+  auto start = std::chrono::steady_clock::now();
+  std::vector<CheckResult> results;
+  for (const PartSpec& p : manifest.parts) {
+    if (!all && p.part != part) continue;
+    std::cerr << "grading part " << p.part << " ...\n";
+    std::vector<CheckResult> r = grade_part(manifest, p.part, options);
+    results.insert(results.end(), r.begin(), r.end());
+  }
+  if (results.empty()) {
+    std::cerr << "grader: the manifest " << options.manifest_path << " has no part " << part << "\n";
+    return 2;
+  }
+  double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  print_score_table(std::cout, results);
+  if (!json_path.empty()) {
+    std::ofstream out(json_path);
+    out << gradescope_results(results, seconds).dump(2) << "\n";
+    if (!out) {
+      std::cerr << "grader: cannot write " << json_path << "\n";
+      return 2;
+    }
+  }
+  return all_passed(results) ? 0 : 1;
+}
