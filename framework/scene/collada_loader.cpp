@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <iostream>
 #include <sstream>
 #include <string_view>
@@ -63,17 +64,27 @@ struct GeometryData {
 /// arrays, geometries and materials shared by several instances are read once.
 class ColladaReader {
  public:
-  ColladaReader(const std::string& text, std::string name, const WarningSink& warn)
-      : text_(text), name_(std::move(name)), warn_(warn) {}
+  ColladaReader(std::string name, const WarningSink& warn) : name_(std::move(name)), warn_(warn) {}
 
-  Scene read();
+  /// Parses XML held in memory.
+  Scene read_string(const std::string& xml) {
+    text_ = &xml;
+    return read(doc_.load_buffer(xml.data(), xml.size()));
+  }
+  /// Parses a file. pugixml reads it into its own buffer; the text itself is only read again
+  /// (text()) when a message needs a line number, so a large scene is not held twice.
+  Scene read_file(const std::string& path) {
+    path_ = path;
+    return read(doc_.load_file(path.c_str()));
+  }
 
  private:
   // --- messages ---
   size_t line_of(pugi::xml_node n) const {
     ptrdiff_t off = n.offset_debug();
-    if (off < 0 || size_t(off) > text_.size()) return 0;
-    return size_t(std::count(text_.begin(), text_.begin() + off, '\n')) + 1;
+    const std::string& t = text();
+    if (off < 0 || size_t(off) > t.size()) return 0;
+    return size_t(std::count(t.begin(), t.begin() + off, '\n')) + 1;
   }
   static std::string tag(pugi::xml_node n) {
     std::string s = "<" + std::string(n.name());
@@ -175,7 +186,22 @@ class ColladaReader {
                                     : glm::vec3(0, 1, 0);
   }
 
-  const std::string& text_;
+  Scene read(pugi::xml_parse_result res);
+  const std::string& text() const {
+    if (!text_) {
+      std::ifstream in(path_, std::ios::binary | std::ios::ate);
+      std::streamoff size = in ? std::streamoff(in.tellg()) : 0;
+      text_storage_.resize(size_t(std::max<std::streamoff>(size, 0)));
+      in.seekg(0);
+      in.read(text_storage_.data(), std::streamsize(text_storage_.size()));
+      text_ = &text_storage_;
+    }
+    return *text_;
+  }
+
+  std::string path_;                      ///< the file, when reading one
+  mutable std::string text_storage_;      ///< its text, read back for line numbers
+  mutable const std::string* text_ = nullptr;
   std::string name_;
   const WarningSink& warn_;
   pugi::xml_document doc_;
@@ -640,13 +666,27 @@ void ColladaReader::add_mesh(const GeometryData& g, pugi::xml_node geom, const g
   };
   std::unordered_map<const FloatSource*, Table> tables;
 
+  // At most one vertex record per corner; grow geometrically so many small instances stay linear.
+  size_t corners = 0;
+  for (const MeshPart& part : g.parts) corners += part.pos.size();
+  auto make_room = [&](auto& v) {
+    if (v.capacity() < v.size() + corners) v.reserve(std::max(v.size() + corners, v.capacity() * 3 / 2));
+  };
+  make_room(scene_.positions);
+  make_room(scene_.normals);
+
   for (size_t pi = 0; pi < g.parts.size(); ++pi) {
     const MeshPart& part = g.parts[pi];
     const std::vector<glm::vec3>& wp = world[part.positions];
     Table* tab = nullptr;
     if (part.normals) {
       tab = &tables[part.normals];
-      if (tab->head.empty()) tab->head.assign(part.positions->count, kNone);
+      if (tab->head.empty()) {
+        tab->head.assign(part.positions->count, kNone);
+        tab->next.reserve(part.pos.size());
+        tab->normal_index.reserve(part.pos.size());
+        tab->global.reserve(part.pos.size());
+      }
     }
     size_t ntri = part.pos.size() / 3;
     scene_.triangles.reserve(scene_.triangles.size() + ntri);
@@ -824,23 +864,24 @@ void ColladaReader::default_camera() {
   warn({}, "no camera in the file; placed one that frames the scene");
 }
 
-Scene ColladaReader::read() {
-  pugi::xml_parse_result res = doc_.load_buffer(text_.data(), text_.size());
+Scene ColladaReader::read(pugi::xml_parse_result res) {
+  if (res.status == pugi::status_file_not_found || res.status == pugi::status_io_error ||
+      res.status == pugi::status_out_of_memory)
+    throw SceneError(name_, "", std::string("cannot be read: ") + res.description());
   if (!res) {
+    const std::string& text_ = text();
     size_t line = size_t(std::count(text_.begin(), text_.begin() + std::min<size_t>(res.offset, text_.size()), '\n')) + 1;
     // Name the innermost element that was still open where the parser stopped.
     pugi::xml_node open = doc_.document_element();
     for (pugi::xml_node n = open; n; n = n.last_child())
       if (n.type() == pugi::node_element) open = n;
-    bool at_end = res.offset >= ptrdiff_t(text_.size()) - 1;
+    // Truncated: the parser stopped with no tag left to close after the place it stopped.
+    bool at_end = res.offset >= 0 && text_.find('>', size_t(res.offset)) == std::string::npos;
     std::string elem = open ? tag(open) + " (line " + std::to_string(line) + ")"
                             : "line " + std::to_string(line);
     if (res.status == pugi::status_no_document_element)
       throw SceneError(name_, "", "is not XML: it holds no element at all");
-    if (at_end && (res.status == pugi::status_end_element_mismatch ||
-                   res.status == pugi::status_unrecognized_tag || res.status == pugi::status_bad_pcdata ||
-                   res.status == pugi::status_bad_start_element || res.status == pugi::status_bad_attribute ||
-                   res.status == pugi::status_bad_end_element))
+    if (at_end)
       throw SceneError(name_, elem, std::string("the XML ends before this element is closed (truncated file?): ") +
                                         res.description());
     throw SceneError(name_, elem, std::string("is not well-formed XML: ") + res.description());
@@ -912,8 +953,8 @@ Scene ColladaReader::read() {
 }  // namespace
 
 Scene load_collada_string(const std::string& xml, const std::string& name, const WarningSink& warn) {
-  ColladaReader reader(xml, name, warn);
-  return reader.read();
+  ColladaReader reader(name, warn);
+  return reader.read_string(xml);
 }
 
 Scene load_collada(const std::string& path, const WarningSink& warn) {
@@ -922,18 +963,10 @@ Scene load_collada(const std::string& path, const WarningSink& warn) {
   fs::file_status st = fs::status(path, ec);
   if (!fs::exists(st)) throw SceneError(path, "", "no such file");
   if (fs::is_directory(st)) throw SceneError(path, "", "is a directory, not a scene file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw SceneError(path, "", "cannot be opened for reading (permissions?)");
-  std::string text;
-  in.seekg(0, std::ios::end);
-  std::streamoff size = in.tellg();
-  in.seekg(0, std::ios::beg);
-  if (size > 0) {
-    text.resize(size_t(size));
-    in.read(text.data(), size);
-  }
-  if (!in && size != 0) throw SceneError(path, "", "cannot be read");
-  return load_collada_string(text, path, warn);
+  if (!std::ifstream(path, std::ios::binary))
+    throw SceneError(path, "", "cannot be opened for reading (permissions?)");
+  ColladaReader reader(path, warn);
+  return reader.read_file(path);
 }
 
 }  // namespace pt
