@@ -2,6 +2,7 @@
 // none crashes or hangs, however it is cut.
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -253,6 +254,35 @@ TEST(FrameworkBadScene, EveryTruncationFailsCleanly) {
     }
   }
   EXPECT_EQ(errors, xml.size() - 12);
+}
+
+TEST(FrameworkBadScene, RandomCorruptionsFailCleanly) {
+  // Seeded (fixed) corruptions of a valid scene: a few characters replaced by ones that matter
+  // to XML or to numbers. Each must load or throw SceneError; nothing else (no bad_alloc, no
+  // out_of_range, no crash) may escape.
+  std::string base = scene_with("0 0 0 1 0 0 0 1 0 1 1 0", "0 1 2 2 1 3",
+                                "<geometry id=\"ball\"><extra><technique profile=\"CGL\"><sphere><radius>1"
+                                "</radius></sphere></technique></extra></geometry>",
+                                "<node id=\"N\"><rotate>0 0 1 30</rotate><instance_geometry url=\"#g\"/>"
+                                "<instance_geometry url=\"#ball\"/></node>");
+  const std::string alphabet = "<>/\"= #-.e9017x&;";
+  std::mt19937 rng(20240601u);
+  size_t loaded = 0, refused = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    std::string xml = base;
+    int edits = 1 + int(rng() % 3);
+    for (int e = 0; e < edits; ++e) xml[rng() % xml.size()] = alphabet[rng() % alphabet.size()];
+    try {
+      Scene s = load_collada_string(xml, "mutant.dae", [](const std::string&) {});
+      ASSERT_GT(s.primitive_count(), 0u);
+      ++loaded;
+    } catch (const SceneError& e) {
+      ASSERT_EQ(std::string(e.what()).rfind("mutant.dae: ", 0), 0u) << e.what();
+      ++refused;
+    }
+  }
+  EXPECT_GT(refused, 0u);
+  EXPECT_GT(loaded, 0u);
 }
 
 }  // namespace

@@ -261,7 +261,9 @@ const std::vector<float>& ColladaReader::float_array(pugi::xml_node arr) {
   if (it != arrays_.end()) return it->second;
   std::vector<float> v;
   pugi::xml_attribute count = arr.attribute("count");
-  if (count) v.reserve(std::min<size_t>(count.as_ullong(), 1u << 28));
+  // Reserve what the count promises, but never more than the text can hold (a number takes at
+  // least two characters with its separator), so a lying count cannot ask for gigabytes.
+  if (count) v.reserve(std::min<size_t>(count.as_ullong(), std::strlen(arr.child_value()) / 2 + 1));
   parse_list(arr, v);
   if (count && v.size() != count.as_ullong())
     fail(arr, "count=\"" + std::string(count.value()) + "\" but the array holds " +
@@ -342,12 +344,12 @@ void ColladaReader::read_part(pugi::xml_node prim, pugi::xml_node mesh, Geometry
   } else {
     pugi::xml_node p = prim.child("p");
     if (!p && count) fail(prim, "has no <p>");
-    idx.reserve(size_t(count) * 3 * stride);
+    idx.reserve(std::min<size_t>(size_t(count) * 3 * stride, std::strlen(p.child_value()) / 2 + 1));
     parse_list(p, idx);
     if (kind == "polylist") {
       pugi::xml_node vc = prim.child("vcount");
       if (!vc) fail(prim, "has no <vcount>");
-      vcount.reserve(count);
+      vcount.reserve(std::min<size_t>(count, std::strlen(vc.child_value()) / 2 + 1));
       parse_list(vc, vcount);
       if (vcount.size() != count)
         fail(vc, "holds " + std::to_string(vcount.size()) + " polygon sizes but count=\"" +
@@ -654,8 +656,11 @@ void ColladaReader::add_mesh(const GeometryData& g, pugi::xml_node geom, const g
     std::vector<glm::vec3>& wp = world[part.positions];
     if (wp.empty()) {
       wp.resize(part.positions->count);
-      for (uint32_t i = 0; i < part.positions->count; ++i)
+      for (uint32_t i = 0; i < part.positions->count; ++i) {
         wp[i] = glm::vec3(m * glm::vec4(part.positions->vec3(i), 1.0f));
+        if (!std::isfinite(wp[i].x + wp[i].y + wp[i].z))  // finite numbers can overflow float
+          fail(geom, "position " + std::to_string(i) + " is not finite after the node transform");
+      }
     }
   }
   // De-indexing tables: for each position index, a chain of the vertices made for it so far
