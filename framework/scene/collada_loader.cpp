@@ -168,7 +168,7 @@ class ColladaReader {
   const std::vector<float>& float_array(pugi::xml_node arr);
   const FloatSource& source(pugi::xml_node src);
   const GeometryData& geometry(pugi::xml_node geom);
-  void read_part(pugi::xml_node prim, pugi::xml_node mesh, GeometryData& g);
+  void read_part(pugi::xml_node prim, GeometryData& g);
   uint32_t material(pugi::xml_node mat);
   uint32_t default_material();
   void read_effect(pugi::xml_node effect, Material& m);
@@ -295,7 +295,7 @@ const FloatSource& ColladaReader::source(pugi::xml_node src) {
   return sources_.emplace(src.internal_object(), s).first->second;
 }
 
-void ColladaReader::read_part(pugi::xml_node prim, pugi::xml_node mesh, GeometryData& g) {
+void ColladaReader::read_part(pugi::xml_node prim, GeometryData& g) {
   std::string_view kind = prim.name();
   MeshPart part;
   part.symbol = prim.attribute("material").value();
@@ -395,7 +395,6 @@ void ColladaReader::read_part(pugi::xml_node prim, pugi::xml_node mesh, Geometry
       }
     c += n;
   }
-  (void)mesh;
   g.parts.push_back(std::move(part));
 }
 
@@ -411,7 +410,7 @@ const GeometryData& ColladaReader::geometry(pugi::xml_node geom) {
       for (pugi::xml_node prim : child.children()) {
         std::string_view pn = prim.name();
         if (pn == "triangles" || pn == "polylist" || pn == "polygons")
-          read_part(prim, child, g);
+          read_part(prim, g);
         else if (pn == "lines" || pn == "linestrips")
           warn(prim, "lines have no surface to render, skipped");
         else if (pn == "tristrips" || pn == "trifans")
@@ -630,6 +629,8 @@ void ColladaReader::instance_geometry(pugi::xml_node inst, const glm::mat4& m) {
     s.radius = g.sphere_radius * mean;
     if (!(s.radius > 0.0f) || !std::isfinite(s.radius))
       fail(inst, "the node transform scales the sphere to radius " + std::to_string(s.radius));
+    if (!std::isfinite(s.center.x + s.center.y + s.center.z))
+      fail(inst, "the sphere's centre is not finite after the node transform");
     s.material = material_for(bound.size() == 1 ? bound.begin()->first : std::string());
     scene_.spheres.push_back(s);
     return;
@@ -748,6 +749,8 @@ void ColladaReader::instance_light(pugi::xml_node inst, const glm::mat4& m) {
   Light light;
   glm::mat3 linear(m);
   light.position = glm::vec3(m * glm::vec4(0, 0, 0, 1));
+  if (!std::isfinite(light.position.x + light.position.y + light.position.z))
+    fail(inst, "the light's position is not finite after the node transform");
   glm::vec3 dir = linear * glm::vec3(0, 0, -1);
   if (!(glm::length(dir) > 0.0f)) fail(inst, "the node transform collapses the light's direction");
   light.direction = glm::normalize(dir);
