@@ -19,22 +19,23 @@ bool finite_positive(const glm::vec3& v) {
          (v.x > 0 || v.y > 0 || v.z > 0);
 }
 
-// Whether triangle (a, b, c) lies on parallelogram light `l`: in its plane and inside it, both
-// within a thousandth of the light's size (a classification of scene data, not a ray test).
+// Whether triangle (a, b, c) is a panel of parallelogram light `l`: its corners in the light's
+// plane (within a thousandth of the light's size) and its centroid inside the light. The course's
+// panels are the light's face but not its exact outline (CBspheres' panel is 0.8 × 0.6 where its
+// light is 0.6 × 0.8), so the outline is not required to match. A classification of scene data,
+// not a ray test.
 bool on_parallelogram(const SampledLight& l, const glm::vec3& a, const glm::vec3& b,
                       const glm::vec3& c) {
   const glm::vec3 n_raw = glm::cross(l.edge_u, l.edge_v);
   const float n2 = glm::dot(n_raw, n_raw);
   const float size = std::max(glm::length(l.edge_u), glm::length(l.edge_v));
   const float tol = 1e-3f;
-  for (const glm::vec3& q : {a, b, c}) {
-    glm::vec3 d = q - l.corner;
-    if (std::abs(glm::dot(d, l.normal)) > tol * size) return false;
-    float s = glm::dot(glm::cross(d, l.edge_v), n_raw) / n2;
-    float t = glm::dot(glm::cross(l.edge_u, d), n_raw) / n2;
-    if (s < -tol || s > 1 + tol || t < -tol || t > 1 + tol) return false;
-  }
-  return true;
+  for (const glm::vec3& q : {a, b, c})
+    if (std::abs(glm::dot(q - l.corner, l.normal)) > tol * size) return false;
+  glm::vec3 d = (a + b + c) / 3.0f - l.corner;
+  float s = glm::dot(glm::cross(d, l.edge_v), n_raw) / n2;
+  float t = glm::dot(glm::cross(l.edge_u, d), n_raw) / n2;
+  return s >= 0 && s <= 1 && t >= 0 && t <= 1;
 }
 
 // Parameter t > 0 where the ray (o, w) meets the parallelogram, or 0 for a miss.

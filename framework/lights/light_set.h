@@ -3,8 +3,8 @@
 // The emitter rule (how scene lights and glowing surfaces share the work, never counted twice):
 // - The scene's lights (COLLADA library_lights) are sampled: point, spot and directional lights
 //   once each (delta lights), CGL area lights (parallelograms, one-sided) -l times.
-// - An emissive triangle that lies on an area light (in its plane and inside its parallelogram:
-//   the course's "light panel" mesh) is that light's visible face. The camera sees its emission
+// - An emissive triangle that lies on an area light (in its plane, its centroid inside the
+//   parallelogram: the course's "light panel" mesh) is that light's visible face. The camera sees its emission
 //   (zero bounce); it is never sampled itself, a path bouncing onto it adds nothing (the area
 //   light's samples already did), and it does not block shadow rays towards its own light.
 // - Every other emissive triangle becomes a light: one mesh light per emissive material, its
