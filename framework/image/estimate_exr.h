@@ -1,0 +1,19 @@
+// A render as an estimator on disk: mean, per-pixel variance and sample count in one EXR.
+#pragma once
+
+#include <string>
+
+#include "stats/block_test.h"
+
+namespace pt {
+
+/// Writes `estimate` to an .exr with the channels R, G, B (mean), varR, varG, varB (variance of
+/// one sample) and n (samples), all 32-bit float, so a reference keeps what the block t-test
+/// needs. Throws ImageError.
+void write_estimate_exr(const std::string& path, const RenderEstimate& estimate);
+
+/// Reads what write_estimate_exr wrote. Throws ImageError naming the path and the channel that
+/// is missing.
+RenderEstimate read_estimate_exr(const std::string& path);
+
+}  // namespace pt

@@ -1,0 +1,154 @@
+#include "image/image.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+
+#include <OpenImageIO/imageio.h>
+
+namespace pt {
+namespace {
+
+std::string lower_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+void check_writable_target(const std::string& path) {
+  if (!is_supported_image_extension(path)) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    throw ImageError(path, ext.empty() ? "no file extension: use .png or .exr"
+                                       : "unknown image extension '" + ext + "': use .png or .exr");
+  }
+  std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  std::error_code ec;
+  if (!parent.empty() && !std::filesystem::is_directory(parent, ec))
+    throw ImageError(path, "cannot write: folder '" + parent.string() + "' does not exist");
+}
+
+// Writes interleaved pixels through OpenImageIO; `pixel_type` is how they are stored in memory,
+// `spec` says how the file stores them.
+void write_pixels(const std::string& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc pixel_type,
+                  const void* data) {
+  auto out = OIIO::ImageOutput::create(path);
+  if (!out) throw ImageError(path, "cannot write: " + OIIO::geterror());
+  if (!out->open(path, spec)) throw ImageError(path, "cannot write: " + out->geterror());
+  bool ok = out->write_image(pixel_type, data);
+  ok = out->close() && ok;
+  if (!ok) throw ImageError(path, "cannot write: " + out->geterror());
+}
+
+void check_size(const std::string& path, int width, int height) {
+  if (width <= 0 || height <= 0)
+    throw ImageError(path, "cannot write an empty image (" + std::to_string(width) + "x" +
+                               std::to_string(height) + ")");
+}
+
+}  // namespace
+
+Image::Image(int width, int height, glm::vec3 fill)
+    : width_(width), height_(height), pixels_(size_t(std::max(width, 0)) * size_t(std::max(height, 0)), fill) {}
+
+ChannelImage::ChannelImage(int w, int h, std::vector<std::string> names)
+    : width(w), height(h), channels(std::move(names)),
+      values(size_t(std::max(w, 0)) * size_t(std::max(h, 0)) * channels.size(), 0.0f) {}
+
+int ChannelImage::channel_index(const std::string& name) const {
+  for (size_t i = 0; i < channels.size(); ++i)
+    if (channels[i] == name) return int(i);
+  return -1;
+}
+
+float srgb_encode(float linear) {
+  if (!(linear > 0.0f)) return 0.0f;  // also NaN
+  if (linear >= 1.0f) return 1.0f;
+  return linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+}
+
+float srgb_decode(float encoded) {
+  if (!(encoded > 0.0f)) return 0.0f;
+  if (encoded >= 1.0f) return 1.0f;
+  return encoded <= 0.04045f ? encoded / 12.92f : std::pow((encoded + 0.055f) / 1.055f, 2.4f);
+}
+
+bool is_supported_image_extension(const std::string& path) {
+  std::string ext = lower_extension(path);
+  return ext == ".png" || ext == ".exr";
+}
+
+void write_image(const std::string& path, const Image& image) {
+  check_writable_target(path);
+  check_size(path, image.width(), image.height());
+  if (lower_extension(path) == ".png") {
+    std::vector<unsigned char> bytes(image.pixels().size() * 3);
+    for (size_t i = 0; i < image.pixels().size(); ++i)
+      for (int c = 0; c < 3; ++c)
+        bytes[3 * i + size_t(c)] =
+            (unsigned char)std::lround(255.0f * srgb_encode(image.pixels()[i][c]));
+    OIIO::ImageSpec spec(image.width(), image.height(), 3, OIIO::TypeDesc::UINT8);
+    spec.attribute("oiio:ColorSpace", "sRGB");
+    write_pixels(path, spec, OIIO::TypeDesc::UINT8, bytes.data());
+  } else {
+    OIIO::ImageSpec spec(image.width(), image.height(), 3, OIIO::TypeDesc::FLOAT);
+    spec.attribute("oiio:ColorSpace", "Linear");
+    write_pixels(path, spec, OIIO::TypeDesc::FLOAT, image.pixels().data());
+  }
+}
+
+void write_exr(const std::string& path, const ChannelImage& image) {
+  if (lower_extension(path) != ".exr")
+    throw ImageError(path, "channels beyond RGB need an .exr file");
+  check_writable_target(path);
+  check_size(path, image.width, image.height);
+  if (image.channels.empty()) throw ImageError(path, "cannot write an image with no channels");
+  if (image.values.size() != size_t(image.width) * size_t(image.height) * image.channels.size())
+    throw ImageError(path, "channel data does not match the image size");
+  OIIO::ImageSpec spec(image.width, image.height, int(image.channels.size()), OIIO::TypeDesc::FLOAT);
+  spec.channelnames = image.channels;
+  spec.attribute("oiio:ColorSpace", "Linear");
+  write_pixels(path, spec, OIIO::TypeDesc::FLOAT, image.values.data());
+}
+
+ChannelImage read_channels(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw ImageError(path, "no such file");
+  auto in = OIIO::ImageInput::open(path);
+  if (!in) throw ImageError(path, "cannot read: " + OIIO::geterror());
+  const OIIO::ImageSpec& spec = in->spec();
+  ChannelImage image(spec.width, spec.height, spec.channelnames);
+  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.values.data()))
+    throw ImageError(path, "cannot read: " + in->geterror());
+  in->close();
+  return image;
+}
+
+Image read_image(const std::string& path) {
+  ChannelImage channels = read_channels(path);
+  const bool srgb = lower_extension(path) != ".exr";
+  int rgb[3];
+  const int n = int(channels.channels.size());
+  int r = channels.channel_index("R"), g = channels.channel_index("G"), b = channels.channel_index("B");
+  if (r >= 0 && g >= 0 && b >= 0) {
+    rgb[0] = r, rgb[1] = g, rgb[2] = b;
+  } else if (n >= 3) {
+    rgb[0] = 0, rgb[1] = 1, rgb[2] = 2;
+  } else if (n >= 1) {
+    rgb[0] = rgb[1] = rgb[2] = 0;  // grey (with or without alpha)
+  } else {
+    throw ImageError(path, "the image has no channels");
+  }
+  Image image(channels.width, channels.height);
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x)
+      for (int c = 0; c < 3; ++c) {
+        float v = channels.at(x, y, rgb[c]);
+        image.at(x, y)[c] = srgb ? srgb_decode(v) : v;
+      }
+  return image;
+}
+
+}  // namespace pt
