@@ -1,0 +1,90 @@
+// Part 2: a bounding volume hierarchy over a scene's primitives, and the ray queries through it.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "2-bvh/bvh_split.h"
+#include "2-bvh/ray_box.h"
+#include "geometry/ray_query.h"
+#include "scene/scene.h"
+
+namespace pt {
+
+/// How to build a BVH.
+struct BvhOptions {
+  BvhSplitMethod split = BvhSplitMethod::sah;
+  int max_leaf_size = 4;  ///< a node with more primitives is always split (1 .. kMaxLeafSize)
+  int sah_bins = 16;      ///< centroid bins per axis (2 .. kMaxSahBins)
+  SahCosts costs;
+};
+
+/// One node of the flattened tree, 32 bytes, two to a cache line. Nodes are stored depth first:
+/// an interior node's first child is the next node, so only the second child's index is kept.
+struct alignas(32) BvhNode {
+  Bounds3 bounds;
+  uint32_t offset = 0;  ///< leaf: first entry in the primitive order; interior: second child
+  uint16_t count = 0;   ///< primitives in a leaf; 0 for an interior node
+  uint8_t axis = 0;     ///< interior: the split axis (for inspection)
+  uint8_t pad = 0;
+
+  bool is_leaf() const { return count > 0; }
+};
+
+/// What a build made, for `pathtracer --info` and for bench. SAH cost uses the build's costs,
+/// relative to the root box: the expected work of a random ray that hits the root.
+struct BvhStats {
+  uint32_t primitives = 0;
+  uint32_t nodes = 0;
+  uint32_t leaves = 0;
+  uint32_t depth = 0;          ///< longest root-to-leaf path, in edges
+  uint32_t max_leaf_size = 0;  ///< largest leaf actually made
+  double mean_leaf_size = 0.0;
+  double sah_cost = 0.0;
+  double build_ms = 0.0;
+  BvhSplitMethod split = BvhSplitMethod::sah;
+};
+
+/// A binary BVH over every primitive of a scene (triangles and spheres), answering the same
+/// queries as BruteForce with the same answers: the nearest hit (ties go to the lower primitive
+/// index, as brute force's order gives them) and whether anything occludes a ray. The scene must
+/// outlive the BVH. Leaves keep copies of their triangles' corners (bit-identical to the scene's),
+/// so a leaf's triangles are read from one contiguous block.
+class Bvh final : public RayQuery {
+ public:
+  explicit Bvh(const Scene& scene, const BvhOptions& options = {});
+
+  bool intersect(const Ray& ray, SurfaceHit* hit) const override;
+  bool occluded(const Ray& ray) const override;
+
+  const BvhStats& stats() const { return stats_; }
+  const std::vector<BvhNode>& nodes() const { return nodes_; }
+  /// Primitive indices in leaf order: leaf node n holds order()[n.offset .. n.offset + n.count).
+  const std::vector<uint32_t>& order() const { return order_; }
+
+  static constexpr int kMaxLeafSize = 255;
+  /// Deeper than this the build splits by count, so no traversal stack can overflow.
+  static constexpr int kMaxDepth = 96;
+
+ private:
+  /// The corners of a triangle in leaf order (unused for a sphere's entry).
+  struct TriangleCorners {
+    glm::vec3 p0, p1, p2;
+  };
+  struct NearestState;
+
+  void intersect_leaf(const BvhNode& leaf, NearestState* state) const;
+  bool leaf_occludes(const BvhNode& leaf, const Ray& ray) const;
+
+  const Scene& scene_;
+  std::vector<BvhNode> nodes_;
+  std::vector<uint32_t> order_;
+  std::vector<TriangleCorners> corners_;
+  BvhStats stats_;
+
+  friend class BvhBuilder;
+};
+
+}  // namespace pt

@@ -1,0 +1,144 @@
+// BVH traversal: the student's two loops (nearest hit, any hit) and the leaf plumbing they call.
+#include <utility>
+
+#include "1-raygen/scene_intersect.h"
+#include "1-raygen/triangle_intersect.h"
+#include "2-bvh/bvh.h"
+#include "math/float_error.h"
+#include "student/todo.h"
+
+namespace pt {
+
+/// A nearest-hit query in flight. cull.tmax is one float past the best hit so far, so a primitive
+/// at exactly the same distance is still looked at and the lower index can win the tie, as it
+/// does in brute force's order; boxes are culled against the same bound.
+struct Bvh::NearestState {
+  explicit NearestState(const Ray& ray, SurfaceHit* out) : cull(ray), box(ray), hit(out) {}
+  Ray cull;
+  BoxRay box;
+  SurfaceHit* hit;
+  uint32_t best = UINT32_MAX;  ///< primitive of the best hit, UINT32_MAX while there is none
+  float best_t = 0.0f;
+  bool found() const { return best != UINT32_MAX; }
+};
+
+void Bvh::intersect_leaf(const BvhNode& leaf, NearestState* st) const {
+  for (uint32_t i = leaf.offset, end = leaf.offset + leaf.count; i < end; ++i) {
+    const uint32_t prim = order_[i];
+    if (scene_.is_triangle(prim)) {
+      // The cheap test on the leaf's own copy of the corners first; only a hit that beats the
+      // best becomes a full SurfaceHit (the same computation brute force makes, so the same
+      // answer, and a triangle Part 1 refuses to shade is refused here too).
+      TriangleHit th;
+      const TriangleCorners& c = corners_[i];
+      if (!intersect_triangle(st->cull, c.p0, c.p1, c.p2, &th)) continue;
+      if (st->found() && (th.t > st->best_t || (th.t == st->best_t && prim > st->best))) continue;
+    }
+    SurfaceHit h;
+    if (!intersect_primitive(scene_, prim, st->cull, &h)) continue;
+    if (st->found() && (h.t > st->best_t || (h.t == st->best_t && prim > st->best))) continue;
+    *st->hit = h;
+    st->best = prim;
+    st->best_t = h.t;
+    st->cull.tmax = next_float_up(h.t);
+  }
+}
+
+bool Bvh::leaf_occludes(const BvhNode& leaf, const Ray& ray) const {
+  for (uint32_t i = leaf.offset, end = leaf.offset + leaf.count; i < end; ++i) {
+    const uint32_t prim = order_[i];
+    if (scene_.is_triangle(prim)) {
+      TriangleHit th;
+      const TriangleCorners& c = corners_[i];
+      if (intersect_triangle(ray, c.p0, c.p1, c.p2, &th)) return true;
+    } else if (primitive_occludes(scene_, prim, ray)) {
+      return true;
+    }
+  }
+  return false;
+}
+
+bool Bvh::intersect(const Ray& ray, SurfaceHit* hit) const {
+  if (nodes_.empty()) return false;
+  NearestState st(ray, hit);
+  // BEGIN SOLUTION
+  // Nodes still to visit, with the distance at which the ray enters them: a node that the ray
+  // enters only beyond the best hit found since it was pushed is dropped unopened.
+  struct Entry {
+    uint32_t node;
+    float t;
+  };
+  Entry stack[kMaxDepth];
+  int top = 0;
+  float t_root;
+  if (!intersect_box(nodes_[0].bounds, st.box, st.cull.tmax, &t_root)) return false;
+  stack[top++] = {0, t_root};
+  while (top > 0) {
+    const Entry e = stack[--top];
+    if (e.t > st.cull.tmax) continue;
+    uint32_t index = e.node;
+    for (;;) {
+      const BvhNode& node = nodes_[index];
+      if (node.is_leaf()) {
+        intersect_leaf(node, &st);
+        break;
+      }
+      uint32_t near = index + 1, far = node.offset;
+      float t_near, t_far;
+      const bool hit_near = intersect_box(nodes_[near].bounds, st.box, st.cull.tmax, &t_near);
+      const bool hit_far = intersect_box(nodes_[far].bounds, st.box, st.cull.tmax, &t_far);
+      if (hit_near && hit_far) {
+        if (t_far < t_near) std::swap(near, far), std::swap(t_near, t_far);
+        stack[top++] = {far, t_far};
+        index = near;
+      } else if (hit_near || hit_far) {
+        index = hit_near ? near : far;
+      } else {
+        break;
+      }
+    }
+  }
+  return st.found();
+  // END SOLUTION
+  // STUDENT: keep a stack of nodes to visit, each with the distance at which the ray enters it.
+  // Start with the root if intersect_box(root.bounds, st.box, st.cull.tmax, ...) says so. Pop
+  // a node (skip it if it starts beyond st.cull.tmax, which shrinks as hits are found); at a leaf
+  // call intersect_leaf(node, &st); at an interior node test both children (the first is
+  // index + 1, the second node.offset) and go into the nearer one, pushing the other.
+  // Return st.found().
+  PT_STUDENT_TODO("part 2", "Bvh::intersect");
+  for (const BvhNode& node : nodes_)
+    if (node.is_leaf()) intersect_leaf(node, &st);
+  return st.found();
+}
+
+bool Bvh::occluded(const Ray& ray) const {
+  if (nodes_.empty()) return false;
+  const BoxRay box(ray);
+  // BEGIN SOLUTION
+  // Order does not matter when any occluder will do: no distances kept, no sorting.
+  uint32_t stack[kMaxDepth];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const BvhNode& node = nodes_[stack[--top]];
+    float t;
+    if (!intersect_box(node.bounds, box, ray.tmax, &t)) continue;
+    if (node.is_leaf()) {
+      if (leaf_occludes(node, ray)) return true;
+    } else {
+      stack[top++] = node.offset;
+      stack[top++] = uint32_t(&node - nodes_.data()) + 1;
+    }
+  }
+  return false;
+  // END SOLUTION
+  // STUDENT: the same walk as intersect, but return true at the first leaf where
+  // leaf_occludes(node, ray) says so; no nearest-first order or distances are needed.
+  PT_STUDENT_TODO("part 2", "Bvh::occluded");
+  for (const BvhNode& node : nodes_)
+    if (node.is_leaf() && leaf_occludes(node, ray)) return true;
+  return false;
+}
+
+}  // namespace pt
