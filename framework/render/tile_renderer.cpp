@@ -85,8 +85,8 @@ std::string summary_line(const RenderReport& report) {
     std::snprintf(buffer, sizeof buffer, ", %.1f spp on average", spp);
   text += buffer;
   double rate = report.seconds > 0.0 ? double(report.rays) / report.seconds / 1e6 : 0.0;
-  std::snprintf(buffer, sizeof buffer, ", %.2f s, %.1f M rays/s, %d threads", report.seconds, rate,
-                report.threads);
+  std::snprintf(buffer, sizeof buffer, ", %.2f s, %.1f M rays/s, %d thread%s", report.seconds, rate,
+                report.threads, report.threads == 1 ? "" : "s");
   text += buffer;
   if (report.nonfinite_samples > 0)
     text += "; warning: " + std::to_string(report.nonfinite_samples) +
