@@ -10,6 +10,7 @@
 
 #include "1-raygen/pixel_loop.h"
 #include "1-raygen/scene_intersect.h"
+#include "2-bvh/bvh.h"
 #include "5-adaptive/adaptive_sampling.h"
 #include "command_line.h"
 #include "geometry/ray_query.h"
@@ -26,10 +27,28 @@
 namespace pt {
 namespace {
 
-/// The structure that answers the rays. Brute force until a BVH is built (Part 2).
+/// The structure that answers the rays: Part 2's BVH (SAH or midpoint splits), or brute force.
 std::unique_ptr<RayQuery> make_ray_query(const RenderSettings& settings, const Scene& scene) {
-  (void)settings;
-  return std::make_unique<BruteForce>(scene);
+  if (settings.accel == AccelKind::brute_force) return std::make_unique<BruteForce>(scene);
+  BvhOptions options;
+  options.split =
+      settings.accel == AccelKind::bvh_median ? BvhSplitMethod::median : BvhSplitMethod::sah;
+  options.max_leaf_size = settings.bvh_leaf_size;
+  return std::make_unique<Bvh>(scene, options);
+}
+
+/// The BVH's build statistics, for --info.
+std::string describe_bvh(const RenderSettings& settings, const Scene& scene) {
+  if (settings.accel == AccelKind::brute_force) return "accelerator: none (brute force)\n";
+  const std::unique_ptr<RayQuery> query = make_ray_query(settings, scene);
+  const BvhStats& s = static_cast<const Bvh&>(*query).stats();
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "bvh: %s, leaf size %d: %u nodes, %u leaves (mean %.2f, max %u primitives), "
+                "depth %u, SAH cost %.2f, built in %.1f ms\n",
+                s.split == BvhSplitMethod::sah ? "sah" : "median", settings.bvh_leaf_size, s.nodes,
+                s.leaves, s.mean_leaf_size, s.max_leaf_size, s.depth, s.sah_cost, s.build_ms);
+  return line;
 }
 
 /// Shading normal mapped to colour: what the course's renderer shows before lighting exists.
@@ -110,7 +129,7 @@ int run(int argc, char** argv) {
 
   Scene scene = load_collada(command.scene_path);
   if (command.info) {
-    std::cout << describe_scene(scene);
+    std::cout << describe_scene(scene) << describe_bvh(settings, scene);
     return kExitOk;
   }
   if (!command.resolution_given) {
