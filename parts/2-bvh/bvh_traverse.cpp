@@ -1,4 +1,6 @@
 // BVH traversal: the student's two loops (nearest hit, any hit) and the leaf plumbing they call.
+#include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include "1-raygen/scene_intersect.h"
@@ -9,17 +11,29 @@
 
 namespace pt {
 
-/// A nearest-hit query in flight. cull.tmax is one float past the best hit so far, so a primitive
-/// at exactly the same distance is still looked at and the lower index can win the tie, as it
-/// does in brute force's order; boxes are culled against the same bound.
+/// A nearest-hit query in flight. The answer is the smallest t any primitive reports for the
+/// ray's own interval, the lower primitive index winning a tie: a definition that does not depend
+/// on the order primitives are visited in, so the BVH, visiting them in its own order, gives
+/// brute force's answer (Part1's intersect_triangle compares t·det with tmax·det, so whether a
+/// hit an ulp short of tmax counts can depend on tmax's rounding: primitives are therefore judged
+/// on the t they report, never on a shrunken tmax).
+///
+/// What shrinks is only the bound boxes and triangles are culled by: the best t stretched by
+/// kHitDistanceSlack, so a rival an ulp or two nearer in another leaf is still compared. It costs
+/// a few more box tests near ties, nothing else.
 struct Bvh::NearestState {
-  explicit NearestState(const Ray& ray, SurfaceHit* out) : cull(ray), box(ray), hit(out) {}
-  Ray cull;
+  explicit NearestState(const Ray& ray_, SurfaceHit* out)
+      : ray(ray_), cull(ray_), box(ray_), hit(out) {}
+  const Ray& ray;
+  Ray cull;  ///< the ray with tmax = the culling bound
   BoxRay box;
   SurfaceHit* hit;
   uint32_t best = UINT32_MAX;  ///< primitive of the best hit, UINT32_MAX while there is none
   float best_t = 0.0f;
   bool found() const { return best != UINT32_MAX; }
+  bool beats_best(float t, uint32_t prim) const {
+    return !found() || t < best_t || (t == best_t && prim < best);
+  }
 };
 
 void Bvh::intersect_leaf(const BvhNode& leaf, NearestState* st) const {
@@ -32,15 +46,15 @@ void Bvh::intersect_leaf(const BvhNode& leaf, NearestState* st) const {
       TriangleHit th;
       const TriangleCorners& c = corners_[i];
       if (!intersect_triangle(st->cull, c.p0, c.p1, c.p2, &th)) continue;
-      if (st->found() && (th.t > st->best_t || (th.t == st->best_t && prim > st->best))) continue;
+      if (!st->beats_best(th.t, prim)) continue;
     }
     SurfaceHit h;
-    if (!intersect_primitive(scene_, prim, st->cull, &h)) continue;
-    if (st->found() && (h.t > st->best_t || (h.t == st->best_t && prim > st->best))) continue;
+    if (!intersect_primitive(scene_, prim, st->ray, &h)) continue;
+    if (!st->beats_best(h.t, prim)) continue;
     *st->hit = h;
     st->best = prim;
     st->best_t = h.t;
-    st->cull.tmax = next_float_up(h.t);
+    st->cull.tmax = std::min(st->ray.tmax, h.t + std::abs(h.t) * (kHitDistanceSlack - 1.0f));
   }
 }
 

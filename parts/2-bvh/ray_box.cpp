@@ -7,10 +7,12 @@ namespace pt {
 
 bool intersect_box(const Bounds3& box, const BoxRay& ray, float tmax, float* t_entry) {
   // BEGIN SOLUTION
-  // Each of the two products rounds by at most half an ulp and the difference before it too:
-  // three roundings per distance, so stretching the far one by 2·γ(3) covers both (Ize 2013;
-  // pbrt-v3, 3.9.2).
+  // Each distance is within γ(3) of exact (the reciprocal, the difference, the product): stretching
+  // the far one up and the near one down by 2·γ(3) makes the interval contain the exact one
+  // (Ize 2013; pbrt-v3, 3.9.2), so neither the hit test nor the entry distance a traversal culls
+  // by can turn away a point that is in the box.
   constexpr float kFarScale = 1.0f + 2.0f * gamma(3);
+  constexpr float kNearScale = 1.0f - 2.0f * gamma(3);
   float t0 = ray.tmin, t1 = tmax;
   for (int a = 0; a < 3; ++a) {
     float tn = (box.lo[a] - ray.o[a]) * ray.inv_d[a];
@@ -20,7 +22,8 @@ bool intersect_box(const Bounds3& box, const BoxRay& ray, float tmax, float* t_e
       tn = tf;
       tf = s;
     }
-    tf *= kFarScale;
+    tf *= tf > 0.0f ? kFarScale : kNearScale;
+    tn *= tn > 0.0f ? kNearScale : kFarScale;
     // Written so that a NaN distance (origin on the slab plane, direction parallel) keeps t0/t1.
     t0 = tn > t0 ? tn : t0;
     t1 = tf < t1 ? tf : t1;
@@ -30,7 +33,8 @@ bool intersect_box(const Bounds3& box, const BoxRay& ray, float tmax, float* t_e
   // END SOLUTION
   // STUDENT: for each axis, the distances where the ray crosses the box's two planes
   // ((lo - o) · inv_d and (hi - o) · inv_d), ordered near/far; scale the far one up by
-  // 1 + 2·gamma(3) so rounding never lets a ray slip past; keep the largest near and the smallest
+  // 1 + 2·gamma(3) and move the near one towards -inf by as much, so rounding never lets a ray
+  // slip past; keep the largest near and the smallest
   // far, starting from ray.tmin and tmax (written so that a NaN leaves them unchanged). The ray
   // meets the box when near <= far; *t_entry = near.
   PT_STUDENT_TODO("part 2", "intersect_box");

@@ -4,9 +4,15 @@
 #include <glm/vec3.hpp>
 
 #include "math/bounds.h"
+#include "math/float_error.h"
 #include "math/ray.h"
 
 namespace pt {
+
+/// How far past the nearest hit so far a nearest-hit traversal still looks: a hit's reported t
+/// and a box's entry distance each stray from exact by a few ulps (unless the ray grazes the
+/// surface), so a rival an ulp nearer in another box must not be culled before it is compared.
+inline constexpr float kHitDistanceSlack = 1.0f + 2.0f * gamma(16);
 
 /// A ray prepared once for many box tests: the reciprocal of its direction, so a slab test costs
 /// multiplications only. A zero component gives an infinite reciprocal, which the slab test
@@ -22,9 +28,10 @@ struct BoxRay {
 
 /// Whether the ray meets `box` at some distance in [ray.tmin, tmax]; on success *t_entry is where
 /// it enters (clamped to tmin), which lets a traversal visit the nearer of two boxes first.
-/// Conservative: the far distance of each slab is enlarged by its own rounding error (Ize 2013),
-/// so a ray that meets a primitive inside the box is never turned away by rounding, even through
-/// a flat box or along a box face. A slab the ray runs inside of (0 · inf, NaN) narrows nothing.
+/// Conservative: each slab's far distance is enlarged and its near distance reduced by their
+/// rounding error (Ize 2013), so a ray that meets a point of the box at exact distance s in the
+/// interval is never turned away by rounding, and *t_entry <= s, even through a flat box or along
+/// a box face. A slab the ray runs inside of (0 · inf, NaN) narrows nothing.
 bool intersect_box(const Bounds3& box, const BoxRay& ray, float tmax, float* t_entry);
 
 }  // namespace pt

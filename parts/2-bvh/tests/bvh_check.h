@@ -1,0 +1,219 @@
+// Test helpers of Part 2: random rays for a scene, and a BVH checked against brute force on them.
+#pragma once
+
+#include <atomic>
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <mutex>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+#include <glm/common.hpp>
+#include <gtest/gtest.h>
+#include <tbb/parallel_for.h>
+
+#include "1-raygen/scene_intersect.h"
+#include "2-bvh/bvh.h"
+#include "math/float_error.h"
+#include "sampling/rng.h"
+#include "sampling/warp.h"
+#include "scene/collada_loader.h"
+
+namespace pt {
+namespace test {
+
+inline bool file_exists(const std::string& path) { return std::ifstream(path).good(); }
+
+/// A random point of primitive `p`: uniform in a triangle, or on a sphere.
+inline glm::vec3 point_on(const Scene& s, uint32_t p, Rng& rng) {
+  if (s.is_triangle(p)) {
+    const Triangle& t = s.triangles[p];
+    float a = rng.next_float(), b = rng.next_float();
+    if (a + b > 1.0f) a = 1.0f - a, b = 1.0f - b;
+    return s.positions[t.v[0]] + a * (s.positions[t.v[1]] - s.positions[t.v[0]]) +
+           b * (s.positions[t.v[2]] - s.positions[t.v[0]]);
+  }
+  const Sphere& sp = s.spheres[p - s.triangles.size()];
+  return sp.center + sp.radius * square_to_uniform_sphere(rng.next_2d());
+}
+
+/// `count` seeded rays for scene `s`, from points of its bounds (grown by a tenth) in a mix that
+/// finds the hard cases: uniform directions (many misses); aimed at random points of random
+/// primitives (hits); aimed exactly at triangle corners and edge midpoints (where neighbours
+/// tie); and a fifth of them with a finite tmax or tmin > 0, so the interval matters.
+inline std::vector<Ray> random_rays(const Scene& s, size_t count, uint64_t seed) {
+  std::vector<Ray> rays(count);
+  Bounds3 b = s.bounds();
+  if (b.empty()) b = Bounds3{glm::vec3(-1.0f), glm::vec3(1.0f)};
+  const glm::vec3 grow = 0.1f * glm::max(b.extent(), glm::vec3(1e-3f));
+  const glm::vec3 lo = b.lo - grow, hi = b.hi + grow;
+  const uint32_t n = s.primitive_count();
+  Rng rng(seed, 7);
+  for (size_t i = 0; i < count; ++i) {
+    Ray& r = rays[i];
+    r.o = lo + glm::vec3(rng.next_float(), rng.next_float(), rng.next_float()) * (hi - lo);
+    const uint32_t kind = rng.next_u32() % 10;
+    glm::vec3 target;
+    if (n == 0 || kind < 3) {
+      r.d = square_to_uniform_sphere(rng.next_2d());
+    } else {
+      const uint32_t p = rng.next_u32() % n;
+      if (kind < 8 || !s.is_triangle(p)) {
+        target = point_on(s, p, rng);
+      } else {
+        const Triangle& t = s.triangles[p];
+        const uint32_t k = rng.next_u32() % 3;
+        target = kind == 8 ? s.positions[t.v[k]]
+                           : 0.5f * (s.positions[t.v[k]] + s.positions[t.v[(k + 1) % 3]]);
+      }
+      const glm::vec3 d = target - r.o;
+      if (!(glm::dot(d, d) > 0.0f)) {
+        r.d = glm::vec3(0, 0, 1);
+      } else {
+        r.d = glm::normalize(d);
+      }
+    }
+    const uint32_t interval = rng.next_u32() % 10;
+    if (interval == 0) r.tmax = rng.next_float() * 2.0f * glm::length(hi - lo);
+    if (interval == 1) r.tmin = rng.next_float() * glm::length(hi - lo);
+  }
+  return rays;
+}
+
+/// What a comparison found: how many rays, how many disagreements, and the first few, described.
+struct Comparison {
+  size_t rays = 0, hits = 0, nearest_differ = 0, occluded_differ = 0, anyhit_vs_nearest = 0;
+  size_t part1_differ = 0, part1_not_ulp_tie = 0;
+  std::string examples;
+};
+
+inline std::string describe(const Ray& r) {
+  std::ostringstream os;
+  os.precision(9);
+  os << "o=(" << r.o.x << "," << r.o.y << "," << r.o.z << ") d=(" << r.d.x << "," << r.d.y << ","
+     << r.d.z << ") t in (" << r.tmin << "," << r.tmax << ")";
+  return os.str();
+}
+
+/// Brute force over every primitive, each judged on its own against the ray's interval: the
+/// smallest reported t, the lower index on a tie. (Part 1's BruteForce shrinks tmax as it goes,
+/// which can make it keep a hit an ulp farther than a later one; see compare_with_brute_force.)
+/// To keep 100,000 rays over 30,000 triangles to seconds, a primitive is skipped when the ray
+/// misses its box grown by a part in 10^4, tested in double precision: a test independent of
+/// the BVH's float slab test, and one that cannot miss a point of the primitive.
+class Reference {
+ public:
+  explicit Reference(const Scene& s) : s_(s) {
+    for (uint32_t i = 0, n = s.primitive_count(); i < n; ++i) {
+      const Bounds3 b = s.primitive_bounds(i);
+      const glm::dvec3 pad = 1e-4 * glm::dvec3(b.extent()) +
+                             1e-6 * glm::max(glm::abs(glm::dvec3(b.lo)), glm::abs(glm::dvec3(b.hi))) +
+                             glm::dvec3(1e-30);
+      lo_.push_back(glm::dvec3(b.lo) - pad);
+      hi_.push_back(glm::dvec3(b.hi) + pad);
+    }
+  }
+  bool intersect(const Ray& r, SurfaceHit* best) const {
+    bool found = false;
+    for (uint32_t i = 0, n = s_.primitive_count(); i < n; ++i) {
+      SurfaceHit h;
+      if (may_hit(i, r) && intersect_primitive(s_, i, r, &h) && (!found || h.t < best->t))
+        *best = h, found = true;
+    }
+    return found;
+  }
+  bool occluded(const Ray& r) const {
+    for (uint32_t i = 0, n = s_.primitive_count(); i < n; ++i)
+      if (may_hit(i, r) && primitive_occludes(s_, i, r)) return true;
+    return false;
+  }
+
+ private:
+  bool may_hit(uint32_t i, const Ray& r) const {
+    double t0 = -1e300, t1 = 1e300;
+    for (int a = 0; a < 3; ++a) {
+      const double o = r.o[a], d = r.d[a];
+      if (d == 0.0) {
+        if (o < lo_[i][a] || o > hi_[i][a]) return false;
+        continue;
+      }
+      double tn = (lo_[i][a] - o) / d, tf = (hi_[i][a] - o) / d;
+      if (tn > tf) std::swap(tn, tf);
+      t0 = std::max(t0, tn), t1 = std::min(t1, tf);
+    }
+    return t0 <= t1 && t1 >= double(r.tmin) * (1 - 1e-6) - 1e-30 &&
+           t0 <= double(r.tmax) * (1 + 1e-6) + 1e-30;
+  }
+  const Scene& s_;
+  std::vector<glm::dvec3> lo_, hi_;
+};
+
+/// Every ray through `bvh` and through brute force: the same hit or miss, bit-identical t and the
+/// same primitive as nearest_reference; occluded() equal to BruteForce's and to whether
+/// intersect() found a hit. Part 1's BruteForce::intersect is compared too: where it differs,
+/// it must be by a near-tie (its t within 4 ulps above the BVH's).
+inline Comparison compare_with_brute_force(const Scene& s, const RayQuery& bvh,
+                                           const std::vector<Ray>& rays) {
+  BruteForce bf(s);
+  const Reference ref(s);
+  std::atomic<size_t> hits{0}, nearest{0}, occl{0}, any_vs{0}, p1{0}, p1_far{0};
+  std::mutex m;
+  std::string examples;
+  int shown = 0;
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, rays.size(), 256),
+                    [&](const tbb::blocked_range<size_t>& range) {
+    for (size_t i = range.begin(); i < range.end(); ++i) {
+      const Ray& r = rays[i];
+      SurfaceHit a, b, c;
+      std::string why;
+      const bool ha = bvh.intersect(r, &a), hb = ref.intersect(r, &b);
+      const bool oa = bvh.occluded(r), ob = ref.occluded(r);
+      // Part 1's own loop costs a full pass over the primitives: one ray in eight, one in 64 on
+      // big meshes.
+      const bool part1 = i % (s.primitive_count() > 10000 ? 64 : 8) == 0;
+      const bool hc = part1 ? bf.intersect(r, &c) : hb;
+      if (!part1) c = b;
+      if (part1 && bf.occluded(r) != ob) ++occl, why += " Part 1 BruteForce::occluded differs";
+      if (hb) ++hits;
+      if (ha != hb || (ha && (a.t != b.t || a.primitive != b.primitive))) {
+        ++nearest;
+        std::ostringstream os;
+        os.precision(9);
+        os << "nearest: bvh " << (ha ? std::to_string(a.primitive) : "miss") << " t=" << a.t
+           << ", brute force " << (hb ? std::to_string(b.primitive) : "miss") << " t=" << b.t;
+        why = os.str();
+      }
+      if (hc != hb || (hc && (c.t != b.t || c.primitive != b.primitive))) {
+        ++p1;
+        const bool tie = hc && hb && c.t >= b.t &&
+                         float_to_bits(c.t) - float_to_bits(b.t) <= 4u;
+        if (!tie) ++p1_far, why += " Part 1 BruteForce: t=" + std::to_string(c.t);
+      }
+      if (oa != ob) ++occl, why += " occluded: bvh " + std::to_string(oa) + " brute " + std::to_string(ob);
+      if (oa != ha) ++any_vs, why += " any-hit " + std::to_string(oa) + " vs nearest " + std::to_string(ha);
+      if (!why.empty()) {
+        std::lock_guard<std::mutex> lock(m);
+        if (shown++ < 5) examples += "\n  ray " + std::to_string(i) + " " + describe(r) + ": " + why;
+      }
+    }
+  });
+  return {rays.size(), hits, nearest, occl, any_vs, p1, p1_far, examples};
+}
+
+/// Loads a scene, or explains why not in *why (so the caller can skip).
+inline bool try_load(const std::string& path, Scene* scene, std::string* why) {
+  if (!file_exists(path)) {
+    *why = path + " is not there";
+    return false;
+  }
+  *scene = load_collada(path, [](const std::string&) {});
+  return true;
+}
+
+}  // namespace test
+}  // namespace pt
