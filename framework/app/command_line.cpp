@@ -133,6 +133,14 @@ int parse_command_line(int argc, char** argv, CommandLine* command, std::ostream
       ->check(CLI::IsMember({"sah", "median", "none"}))->capture_default_str();
   app.add_option("--leaf-size", s.bvh_leaf_size, "Most primitives in a BVH leaf")->capture_default_str();
   app.add_flag("--normals", normals, "Show shading normals (n * 0.5 + 0.5) instead of light");
+  app.add_flag("--mis", s.mis, "Combine light and BSDF samples by multiple importance sampling");
+  bool no_rr = false;
+  app.add_flag("--no-rr", no_rr, "No Russian roulette: every path runs to the maximum depth");
+  app.add_option("--bounce", s.only_bounce,
+                 "Only the light that took exactly this many bounces (0: emitted, 1: direct)")
+      ->check(CLI::NonNegativeNumber);
+  app.add_flag("--file-camera", c.file_camera,
+               "Keep the file's camera where it is (default: centred on the scene, as the course does)");
 
   try {
     app.parse(argc, argv);
@@ -160,6 +168,7 @@ int parse_command_line(int argc, char** argv, CommandLine* command, std::ostream
               : bvh == "none" ? AccelKind::brute_force
                               : AccelKind::bvh_sah;
     if (normals) s.shading = ShadingMode::normals;
+    if (no_rr) s.russian_roulette = false;
     check_settings(c, resolution, cell, adaptive, app.count("--focal-distance") > 0);
     if (c.resolution_given) check_cell(s);
   } catch (const UsageError& e) {

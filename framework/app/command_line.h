@@ -20,6 +20,7 @@ struct CommandLine {
   std::string output_path;       ///< -f; empty: <scene stem>.png in the current folder
   bool resolution_given = false; ///< -r given; else the width is 480 and the height the scene's aspect
   bool info = false;             ///< --info: describe the scene, render nothing
+  bool file_camera = false;      ///< --file-camera: do not centre the camera on the scene
 };
 
 /// A command line that cannot be honoured; what() names the flag and what is wrong.

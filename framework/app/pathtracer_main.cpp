@@ -11,15 +11,18 @@
 #include "1-raygen/pixel_loop.h"
 #include "1-raygen/scene_intersect.h"
 #include "2-bvh/bvh.h"
+#include "4-global/integrator.h"
 #include "5-adaptive/adaptive_sampling.h"
 #include "command_line.h"
 #include "geometry/ray_query.h"
 #include "image/estimate_exr.h"
 #include "image/image.h"
+#include "image/sample_rate.h"
 #include "render/film.h"
 #include "render/progress.h"
 #include "render/tile_renderer.h"
 #include "render/trace_context.h"
+#include "scene/camera_placement.h"
 #include "scene/collada_loader.h"
 #include "scene/scene_error.h"
 #include "scene/scene_summary.h"
@@ -51,31 +54,30 @@ std::string describe_bvh(const RenderSettings& settings, const Scene& scene) {
   return line;
 }
 
-/// Shading normal mapped to colour: what the course's renderer shows before lighting exists.
-TracedRadianceFn normals_radiance(const RayQuery& query) {
-  return [&query](const Ray& ray, Rng&, TraceContext& context) {
-    context.rays.add();
-    SurfaceHit hit;
-    if (!query.intersect(ray, &hit)) return glm::vec3(0.0f);
-    return hit.n * 0.5f + glm::vec3(0.5f);
-  };
-}
-
-/// The material kinds the radiance function below draws as the file asks.
+/// The material kinds the lighting parts draw as the file asks.
 std::vector<MaterialKind> rendered_material_kinds(const RenderSettings& settings) {
-  (void)settings;
-  return {MaterialKind::diffuse};
+  if (settings.shading == ShadingMode::normals) return {};
+  return {MaterialKind::diffuse, MaterialKind::mirror, MaterialKind::glass};
 }
 
-/// What a camera ray brings back. Until lighting exists (Parts 3-4) every render is the
-/// normals view, as in the course's renderer.
+/// What a camera ray brings back: the normals view (--normals, or a scene with nothing that
+/// emits), or the light Parts 3 and 4 estimate. The integrator lives as long as the function.
+/// Only camera rays are counted: the integrator's shadow and bounce rays are not (yet).
 TracedRadianceFn make_radiance(const RenderSettings& settings, const Scene& scene,
                                const RayQuery& query) {
-  (void)scene;
-  if (settings.shading == ShadingMode::light)
-    std::cerr << "note: lighting is not built yet (Parts 3-4): showing shading normals; "
-                 "-l, -m, -H and -e have no effect\n";
-  return normals_radiance(query);
+  if (settings.shading == ShadingMode::normals) {
+    return [&query](const Ray& ray, Rng&, TraceContext& context) {
+      context.rays.add();
+      return normal_shading(query, ray);
+    };
+  }
+  std::string error;
+  std::shared_ptr<Integrator> integrator = Integrator::create(settings, scene, query, &error);
+  if (!integrator) throw std::runtime_error(error);
+  return [integrator](const Ray& ray, Rng& rng, TraceContext& context) {
+    context.rays.add();
+    return integrator->radiance(ray, rng);
+  };
 }
 
 /// Applies -b and -d to the scene's camera.
@@ -136,6 +138,7 @@ int run(int argc, char** argv) {
     apply_default_resolution(scene.camera.aspect, &settings);
     check_cell(settings);
   }
+  if (!command.file_camera) centre_camera_on(scene.bounds(), &scene.camera);
   apply_lens(settings, &scene.camera);
   if (settings.shading == ShadingMode::light) {
     std::string fallback = materials_falling_back(scene, rendered_material_kinds(settings));
@@ -157,6 +160,13 @@ int run(int argc, char** argv) {
   else
     write_image(command.output_path, film.mean_image());
   std::cout << "wrote " << command.output_path << "\n";
+  if (settings.adaptive) {
+    // The course's NAME_rate.png beside the render: where the samples went.
+    std::filesystem::path out(command.output_path);
+    std::filesystem::path rate = out.parent_path() / (out.stem().string() + "_rate.png");
+    write_image(rate.string(), sample_rate_image(film, settings.samples_per_pixel));
+    std::cout << "wrote " << rate.string() << "\n";
+  }
   return kExitOk;
 }
 
