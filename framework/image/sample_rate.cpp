@@ -18,10 +18,10 @@ glm::vec3 sample_rate_colour(float r) {
 
 Image sample_rate_image(const Film& film, int max_samples) {
   Image image(film.width(), film.height());
-  const float scale = max_samples > 0 ? 1.0f / float(max_samples) : 0.0f;
+  const float max = max_samples > 0 ? float(max_samples) : 1.0f;
   for (int y = 0; y < film.height(); ++y)
     for (int x = 0; x < film.width(); ++x)
-      image.at(x, y) = sample_rate_colour(float(film.at(x, y).count) * scale);
+      image.at(x, y) = sample_rate_colour(float(film.at(x, y).count) / max);
   return image;
 }
 

@@ -275,10 +275,16 @@ bool moller_trumbore(const Ray& ray, const glm::vec3& p0, const glm::vec3& p1,
 
 // The control: the same rays leak through a test that is not watertight, so the zero above
 // means something.
-TEST(Part1Triangle, WatertightTestCatchesALeakyIntersector) {
-  Count c = shoot(icosphere(4), Placement{10.0f, 1e5f}, 200000, 99, moller_trumbore, false);
-  std::printf("control (Moller-Trumbore): %ld rays, %ld leaks\n", c.rays, c.leaks);
-  EXPECT_GT(c.leaks, 0);
+TEST(Part1Triangle, NoLeakWhereANonWatertightTestLeaks) {
+  // The control shows these rays find cracks (so the zero leaks above mean something); the
+  // student's test must close every one of them on the very same rays.
+  Count control = shoot(icosphere(4), Placement{10.0f, 1e5f}, 200000, 99, moller_trumbore, false);
+  std::printf("control (Moller-Trumbore): %ld rays, %ld leaks\n", control.rays, control.leaks);
+  EXPECT_GT(control.leaks, 0);
+  Count yours = shoot(icosphere(4), Placement{10.0f, 1e5f}, 200000, 99, intersect_triangle, false);
+  std::printf("intersect_triangle: %ld rays, %ld leaks\n", yours.rays, yours.leaks);
+  EXPECT_EQ(yours.rays, control.rays);
+  EXPECT_EQ(yours.leaks, 0);
 }
 
 }  // namespace
