@@ -53,7 +53,7 @@ $$L_o(p,\omega_o) = L_e(p,\omega_o) + \int_{H^2} f_r(p,\omega_i\to\omega_o)\,L_i
 $n \mapsto (n + 1)/2$ as a colour.
 
 )";
-    grid(md, "Normals of the spheres, the coil and the teapot.", kSmall,
+    grid(md, "Normals of the spheres, the coil and the teapot.", std::string(kSmall) + " --normals",
          {{first({"cornell_spheres.dae", "sky/CBspheres_lambertian.dae"}), "", "spheres"},
           {first({"cornell_coil.dae"}), "", "coil"},
           {first({"meshedit/teapot.dae"}), "", "teapot"}},
@@ -84,7 +84,7 @@ The table compares render times with and without the BVH; the time is under each
       md << "*The dense mesh was not found: build it with `cmake --build build --target "
             "dense_mesh` and run `website init` again.*\n\n";
     }
-    grid(md, "Large meshes with and without the BVH (normals, 1 sample per pixel).", kSmall,
+    grid(md, "Large meshes with and without the BVH (normals, 1 sample per pixel).", std::string(kSmall) + " --normals",
          cells, 2);
     std::string cb = first({"cornell_spheres.dae", "sky/CBspheres_lambertian.dae"});
     md << R"(## Part 3: Direct illumination
