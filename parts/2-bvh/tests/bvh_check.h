@@ -2,10 +2,13 @@
 #pragma once
 
 #include <atomic>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <fstream>
 #include <mutex>
+#include <ostream>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -213,6 +216,49 @@ inline bool try_load(const std::string& path, Scene* scene, std::string* why) {
   }
   *scene = load_collada(path, [](const std::string&) {});
   return true;
+}
+
+/// One brute-force comparison: a scene file, a split method and a leaf size, checked by
+/// check_against_brute_force (shared by the regular and the stress suites).
+constexpr size_t kRays = 100000;
+
+/// A scene, a split method and a leaf size to check.
+struct Case {
+  std::string path;  ///< relative to the project's scenes/ or the course's scene folder
+  BvhSplitMethod split;
+  int leaf;
+  size_t rays;
+};
+
+inline void PrintTo(const Case& c, std::ostream* os) {
+  *os << c.path << (c.split == BvhSplitMethod::sah ? " sah" : " median") << " leaf " << c.leaf;
+}
+
+inline std::string case_name(const testing::TestParamInfo<Case>& info) {
+  std::string name = info.param.path;
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  return name + (info.param.split == BvhSplitMethod::sah ? "_sah" : "_median") + "_leaf" +
+         std::to_string(info.param.leaf);
+}
+
+inline void check_against_brute_force(const Scene& scene, const Case& c) {
+  BvhOptions options;
+  options.split = c.split;
+  options.max_leaf_size = c.leaf;
+  const Bvh bvh(scene, options);
+  const std::vector<Ray> rays = test::random_rays(scene, c.rays, 2024);
+  const test::Comparison r = test::compare_with_brute_force(scene, bvh, rays);
+  // The rays must exercise both answers, or agreement would say little.
+  EXPECT_GT(r.hits, r.rays / 10) << "too few hits to be a test";
+  EXPECT_LT(r.hits, r.rays) << "no misses at all";
+  EXPECT_EQ(r.nearest_differ, 0u) << r.examples;
+  EXPECT_EQ(r.occluded_differ, 0u) << r.examples;
+  EXPECT_EQ(r.anyhit_vs_nearest, 0u) << r.examples;
+  EXPECT_EQ(r.part1_not_ulp_tie, 0u) << r.examples;
+  if (r.part1_differ > 0)
+    std::printf("note: Part 1's BruteForce kept an ulp-farther tie on %zu of %zu rays\n",
+                r.part1_differ, r.rays);
 }
 
 }  // namespace test
