@@ -1,0 +1,44 @@
+// Counts the rays a renderer asks of a RayQuery, so its summary's rays/s covers every ray.
+#pragma once
+
+#include <cstdint>
+
+#include <tbb/enumerable_thread_specific.h>
+
+#include "geometry/ray_query.h"
+
+namespace pt {
+
+/// A RayQuery that forwards every query to another and counts it: camera, shadow and bounce rays
+/// alike, since lighting code only ever traces through the query it was given. Each thread counts
+/// into its own slot, so counting costs an increment, not a contended cache line.
+class CountingRayQuery final : public RayQuery {
+ public:
+  explicit CountingRayQuery(const RayQuery& inner) : inner_(inner) {}
+
+  bool intersect(const Ray& ray, SurfaceHit* hit) const override {
+    ++counts_.local();
+    return inner_.intersect(ray, hit);
+  }
+  bool occluded(const Ray& ray) const override {
+    ++counts_.local();
+    return inner_.occluded(ray);
+  }
+
+  /// The calling thread's running count: read it before and after some work to learn how many
+  /// rays that work traced on this thread.
+  uint64_t thread_count() const { return counts_.local(); }
+
+  /// Every thread's count, summed; call it when no query is in flight.
+  uint64_t total() const {
+    uint64_t sum = 0;
+    for (uint64_t c : counts_) sum += c;
+    return sum;
+  }
+
+ private:
+  const RayQuery& inner_;
+  mutable tbb::enumerable_thread_specific<uint64_t> counts_{0};
+};
+
+}  // namespace pt
