@@ -46,13 +46,17 @@ function(pt_is_unit_named_test out src)
   endif()
 endfunction()
 
-# pt_add_tests_in(DIR dir LABEL label LIBS lib ...)
+# pt_add_tests_in(DIR dir LABEL label LIBS lib ... [EXCLUDE regex ...])
 # Every *_test.cpp under dir becomes a test executable of its own, labelled `label`;
 # *_stress_test.cpp is also labelled `stress`; *_exact_test.cpp is linked with CGAL (and only it,
-# since CGAL costs seconds per file to compile).
+# since CGAL costs seconds per file to compile). EXCLUDE leaves out a subfolder that builds its
+# own tests against other libraries.
 function(pt_add_tests_in)
-  cmake_parse_arguments(A "" "DIR;LABEL" "LIBS" ${ARGN})
+  cmake_parse_arguments(A "" "DIR;LABEL" "LIBS;EXCLUDE" ${ARGN})
   file(GLOB_RECURSE tests CONFIGURE_DEPENDS ${A_DIR}/*_test.cpp)
+  foreach(regex ${A_EXCLUDE})
+    list(FILTER tests EXCLUDE REGEX "${regex}")
+  endforeach()
   foreach(src ${tests})
     get_filename_component(stem ${src} NAME_WE)
     pt_is_unit_named_test(is_unit ${src})
@@ -71,10 +75,11 @@ function(pt_add_tests_in)
   endforeach()
 endfunction()
 
-# pt_add_library_in(NAME lib DIR dir INCLUDE root LIBS dep ...): a static library of every .cpp
-# under dir except tests and application mains; its headers are included relative to `root`.
+# pt_add_library_in(NAME lib DIR dir INCLUDE root LIBS dep ... [EXCLUDE regex ...]): a static
+# library of every .cpp under dir except tests, application mains and EXCLUDEd subfolders; its
+# headers are included relative to `root`.
 function(pt_add_library_in)
-  cmake_parse_arguments(A "" "NAME;DIR;INCLUDE" "LIBS" ${ARGN})
+  cmake_parse_arguments(A "" "NAME;DIR;INCLUDE" "LIBS;EXCLUDE" ${ARGN})
   file(GLOB_RECURSE srcs CONFIGURE_DEPENDS ${A_DIR}/*.cpp)
   set(kept "")
   foreach(src ${srcs})
@@ -86,6 +91,9 @@ function(pt_add_library_in)
   set(srcs ${kept})
   list(FILTER srcs EXCLUDE REGEX "/app/")
   list(FILTER srcs EXCLUDE REGEX "/tests/")
+  foreach(regex ${A_EXCLUDE})
+    list(FILTER srcs EXCLUDE REGEX "${regex}")
+  endforeach()
   add_library(${A_NAME} STATIC ${srcs})
   target_include_directories(${A_NAME} PUBLIC ${A_INCLUDE})
   target_link_libraries(${A_NAME} PUBLIC ${A_LIBS})
