@@ -1,0 +1,75 @@
+// The framework's 4-wide BVH: the student's binary tree (Part 2) collapsed to four children a node,
+// traversed with a four-box SIMD slab test, answering exactly as brute force does.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "2-bvh/bvh.h"
+#include "accel/box4.h"
+#include "geometry/ray_query.h"
+#include "scene/scene.h"
+
+namespace pt {
+
+/// One node of the wide tree: its four children's boxes side by side, so that one SIMD slab test
+/// answers for all four. 128 bytes, two cache lines.
+struct alignas(64) WideNode {
+  Box4 boxes;           ///< an unused slot holds an empty box, which no ray meets
+  uint32_t child[4];    ///< interior child: its node index; leaf: its first entry in leaf order
+  uint8_t count[4];     ///< leaf: how many primitives (1 .. 255); interior child or unused slot: 0
+  uint8_t children = 0; ///< slots in use (1 .. 4)
+};
+
+/// What a collapse made, for bench and `pathtracer --info`.
+struct WideBvhStats {
+  uint32_t nodes = 0;
+  uint32_t leaves = 0;
+  uint32_t depth = 0;  ///< longest root-to-leaf path, in edges
+  double mean_children = 0.0;
+  double build_ms = 0.0;
+};
+
+/// A 4-wide BVH over a scene's primitives (triangles and spheres), made from a binary Bvh by
+/// pulling each node's largest grandchildren up until it has four children; the binary tree's
+/// leaves are kept as they are. Answers the same queries as BruteForce with the same answers:
+/// the nearest hit judged on the t each primitive reports (ties go to the lower primitive index),
+/// its SurfaceHit made once, by Part 1's intersect_primitive, for the winner only; and whether
+/// anything occludes a ray. The scene must outlive it; the binary tree need not.
+class WideBvh final : public RayQuery {
+ public:
+  WideBvh(const Scene& scene, const Bvh& binary);
+
+  bool intersect(const Ray& ray, SurfaceHit* hit) const override;
+  bool occluded(const Ray& ray) const override;
+
+  const WideBvhStats& stats() const { return stats_; }
+  const std::vector<WideNode>& nodes() const { return nodes_; }
+  /// Primitive indices in leaf order (the binary tree's).
+  const std::vector<uint32_t>& order() const { return order_; }
+
+  /// Entries a traversal stack can need: each visit pops one node and pushes at most three.
+  static constexpr int kStackSize = 3 * Bvh::kMaxDepth + 4;
+
+ private:
+  /// The corners of a triangle in leaf order (unused for a sphere's entry).
+  struct Corners {
+    glm::vec3 p0, p1, p2;
+  };
+  struct Nearest;
+
+  uint32_t collapse(const std::vector<BvhNode>& binary, uint32_t index, uint32_t depth);
+  template <bool kCheckEachCandidate>
+  void find_nearest(const Ray& ray, Nearest* best) const;
+
+  const Scene& scene_;
+  std::vector<WideNode> nodes_;
+  std::vector<uint32_t> order_;
+  std::vector<Corners> corners_;
+  std::vector<uint8_t> is_triangle_;  ///< per leaf-order entry
+  WideBvhStats stats_;
+};
+
+}  // namespace pt
