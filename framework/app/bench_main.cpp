@@ -19,6 +19,7 @@
 
 #include "1-raygen/camera_ray.h"
 #include "2-bvh/bvh.h"
+#include "accel/wide_bvh.h"
 #include "math/float_error.h"
 #include "math/frame.h"
 #include "rays/ray_set.h"
@@ -57,7 +58,7 @@ class Tracer {
 
 class BvhTracer final : public Tracer {
  public:
-  explicit BvhTracer(const Bvh& bvh) : bvh_(bvh) {}
+  explicit BvhTracer(const RayQuery& bvh) : bvh_(bvh) {}
   float trace(const Ray& ray, bool occlusion) const override {
     if (occlusion) return bvh_.occluded(ray) ? 1.0f : 0.0f;
     SurfaceHit hit;
@@ -65,7 +66,7 @@ class BvhTracer final : public Tracer {
   }
 
  private:
-  const Bvh& bvh_;
+  const RayQuery& bvh_;
 };
 
 #ifdef PT_HAVE_EMBREE
@@ -247,7 +248,7 @@ int run(int argc, char** argv) {
   CLI::App app{"bench: BVH build time and rays per second (primary, diffuse, shadow) as JSON"};
   std::string scene_path, rays_prefix, write_prefix, split = "sah";
   int leaf = 4, width = 640, height = 480;
-  bool embree = false;
+  bool embree = false, wide = false;
   double min_seconds = 1.0;
   uint64_t seed = 1;
   std::vector<int> threads;
@@ -265,6 +266,8 @@ int run(int argc, char** argv) {
   app.add_option("--min-seconds", min_seconds, "time each measurement for at least this long")
       ->check(CLI::Range(0.0, 600.0));
   app.add_option("--seed", seed, "seed of the diffuse and shadow sets made from the scene");
+  app.add_flag("--wide", wide,
+               "also time the framework's 4-wide BVH collapsed from the first tree (\"wide4\")");
   app.add_flag("--embree", embree, "also trace the same rays with Intel Embree and print the ratio");
   CLI11_PARSE(app, argc, argv);
   height = std::max(1, width * 3 / 4);
@@ -340,6 +343,31 @@ int run(int argc, char** argv) {
   }
   if (bvhs.size() == 2) out["sah_over_median"] = ratio(mrays[0], mrays[1]);
 
+  json wide_mrays;
+  if (wide) {
+    const WideBvh wide_bvh(scene, *bvhs.front());
+    const WideBvhStats& ws = wide_bvh.stats();
+    json entry = {{"from", methods[0] == BvhSplitMethod::sah ? "sah" : "median"},
+                  {"collapse_ms", ws.build_ms},
+                  {"nodes", ws.nodes},
+                  {"leaves", ws.leaves},
+                  {"depth", ws.depth},
+                  {"mean_children", ws.mean_children}};
+    std::vector<std::vector<float>> answers;
+    time_sets(BvhTracer(wide_bvh), sets, threads, min_seconds, &wide_mrays, &answers);
+    entry["mrays_per_s"] = wide_mrays;
+    entry["over_binary"] = ratio(wide_mrays, mrays[0]);
+    // The wide tree answers exactly as the binary one: every t equal, not merely close.
+    json same;
+    for (size_t s = 0; s < sets.size(); ++s) {
+      size_t n = 0;
+      for (size_t i = 0; i < answers[s].size(); ++i) n += answers[s][i] == ours[s][i];
+      same[sets[s].name] = {{"rays", sets[s].rays.size()}, {"identical_to_binary", n}};
+    }
+    entry["agreement_with_binary"] = same;
+    out["wide4"] = entry;
+  }
+
   if (embree) {
 #ifdef PT_HAVE_EMBREE
     const EmbreeTracer tracer(scene);
@@ -351,6 +379,7 @@ int run(int argc, char** argv) {
     e["build_ms"] = tracer.build_ms();
     e["mrays_per_s"] = em;
     e["ours_over_embree"] = ratio(mrays[0], em);
+    if (wide) e["wide4_over_embree"] = ratio(wide_mrays, em);
     json agreement;
     for (size_t s = 0; s < sets.size(); ++s)
       agreement[sets[s].name] = {{"rays", sets[s].rays.size()},
