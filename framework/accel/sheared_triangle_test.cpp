@@ -1,0 +1,124 @@
+// The wide BVH's triangle test (shear once per ray) against Part 1's intersect_triangle: the same
+// answer and bit-identical t and barycentrics on millions of random and adversarial rays.
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include "1-raygen/triangle_intersect.h"
+#include "accel/sheared_triangle.h"
+#include "math/float_error.h"
+#include "sampling/rng.h"
+#include "sampling/warp.h"
+
+namespace pt {
+namespace {
+
+glm::vec3 random_in_cube(Rng& rng, float half) {
+  return half * (2.0f * glm::vec3(rng.next_float(), rng.next_float(), rng.next_float()) - 1.0f);
+}
+
+/// Counts of one comparison run, and the first disagreement described.
+struct Tally {
+  size_t cases = 0, hits = 0, differ = 0;
+  std::string first;
+};
+
+void compare(const Ray& ray, const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2,
+             Tally* tally) {
+  TriangleHit want, got;
+  const bool hw = intersect_triangle(ray, p0, p1, p2, &want);
+  const bool hg = intersect_sheared_triangle(ShearedRay(ray), ray.tmax, p0, p1, p2, &got);
+  ++tally->cases;
+  tally->hits += hw;
+  const bool same = hw == hg && (!hw || (float_to_bits(want.t) == float_to_bits(got.t) &&
+                                         float_to_bits(want.b0) == float_to_bits(got.b0) &&
+                                         float_to_bits(want.b1) == float_to_bits(got.b1) &&
+                                         float_to_bits(want.b2) == float_to_bits(got.b2)));
+  if (!same && tally->differ++ == 0)
+    tally->first = "ray o=(" + std::to_string(ray.o.x) + "," + std::to_string(ray.o.y) + "," +
+                   std::to_string(ray.o.z) + ") part1 hit=" + std::to_string(hw) +
+                   " t=" + std::to_string(want.t) + ", sheared hit=" + std::to_string(hg) +
+                   " t=" + std::to_string(got.t);
+}
+
+TEST(FrameworkAccelTriangle, BitIdenticalToPart1OnMillionsOfRays) {
+  Rng rng(1234);
+  Tally tally;
+  // Scales from tiny to huge, near and far from the origin.
+  const float scales[] = {1e-3f, 1.0f, 1e3f};
+  const float offsets[] = {0.0f, 10.0f, 1e5f};
+  for (int i = 0; i < 1500000; ++i) {
+    const float scale = scales[rng.next_u32() % 3], offset = offsets[rng.next_u32() % 3];
+    const glm::vec3 centre = random_in_cube(rng, offset);
+    glm::vec3 p[3];
+    for (glm::vec3& q : p) q = centre + random_in_cube(rng, scale);
+    const uint32_t kind = rng.next_u32() % 8;
+    if (kind == 0) p[2] = p[1];                            // two equal corners
+    if (kind == 1) p[2] = p[0] + 0.5f * (p[1] - p[0]);     // (nearly) collinear
+    Ray ray;
+    ray.o = centre + random_in_cube(rng, 4.0f * scale);
+    // Aimed at a random point, a corner or an edge's midpoint: where neighbours tie.
+    const float a = rng.next_float(), b = rng.next_float() * (1.0f - a);
+    const uint32_t aim = rng.next_u32() % 4;
+    const glm::vec3 target = aim == 0   ? p[rng.next_u32() % 3]
+                             : aim == 1 ? 0.5f * (p[0] + p[1])
+                                        : p[0] + a * (p[1] - p[0]) + b * (p[2] - p[0]);
+    ray.d = target - ray.o;
+    if (rng.next_u32() % 4 == 0) ray.d = glm::normalize(ray.d);
+    const uint32_t dir = rng.next_u32() % 16;
+    if (dir == 0) ray.d = square_to_uniform_sphere(rng.next_2d());  // mostly misses
+    if (dir == 1) ray.d[rng.next_u32() % 3] = 0.0f;                 // a zero component
+    if (dir == 2) ray.d[rng.next_u32() % 3] = -0.0f;                // a negative zero
+    if (dir == 3) {                                                 // grazing: in the plane
+      const glm::vec3 e = p[1] - p[0];
+      ray.o = p[0] - e, ray.d = e;
+    }
+    if (dir == 4) ray.d = glm::vec3(0.0f);                           // no direction at all
+    const uint32_t interval = rng.next_u32() % 8;
+    if (interval == 0) ray.tmax = rng.next_float() * 2.0f;
+    if (interval == 1) ray.tmin = rng.next_float();
+    compare(ray, p[0], p[1], p[2], &tally);
+    // The same ray with tmax at its own hit, and an ulp either side: where t·det rounding decides.
+    TriangleHit h;
+    if (intersect_triangle(ray, p[0], p[1], p[2], &h)) {
+      for (float tmax : {h.t, next_float_down(h.t), next_float_up(h.t)}) {
+        Ray r = ray;
+        r.tmax = tmax;
+        compare(r, p[0], p[1], p[2], &tally);
+      }
+    }
+  }
+  EXPECT_EQ(tally.differ, 0u) << tally.first;
+  EXPECT_GT(tally.hits, tally.cases / 5) << "too few hits to be a test";
+  EXPECT_LT(tally.hits, tally.cases) << "no misses at all";
+  std::printf("%zu cases, %zu hits, %zu differ\n", tally.cases, tally.hits, tally.differ);
+}
+
+TEST(FrameworkAccelTriangle, NonFiniteInputsAnswerAsPart1) {
+  const float inf = std::numeric_limits<float>::infinity(), nan = std::nanf("");
+  Tally tally;
+  const glm::vec3 p0(-1, -1, 0), p1(1, -1, 0), p2(0, 1, 0);
+  for (float bad : {inf, -inf, nan})
+    for (int k = 0; k < 3; ++k) {
+      Ray ray;
+      ray.o = glm::vec3(0.1f, 0.2f, 1.0f);
+      ray.d = glm::vec3(0, 0, -1);
+      Ray r = ray;
+      r.d[k] = bad;
+      compare(r, p0, p1, p2, &tally);
+      r = ray;
+      r.o[k] = bad;
+      compare(r, p0, p1, p2, &tally);
+      glm::vec3 q = p1;
+      q[k] = bad;
+      compare(ray, p0, q, p2, &tally);
+    }
+  EXPECT_EQ(tally.differ, 0u) << tally.first;
+}
+
+}  // namespace
+}  // namespace pt
