@@ -1,4 +1,4 @@
-#include "convergence_plot.h"
+#include "plot/convergence_plot.h"
 
 #include <nlohmann/json.hpp>
 
@@ -9,12 +9,27 @@
 #include <map>
 #include <sstream>
 
-#include "directive.h"
 
 namespace fs = std::filesystem;
 
-namespace pt::web {
+namespace pt {
 namespace {
+
+/// Text as SVG (XML) character data: the five characters markup gives a meaning escaped.
+std::string xml_escape(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&#39;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
 
 std::string trim(const std::string& s) {
   size_t a = s.find_first_not_of(" \t\r\"");
@@ -187,7 +202,7 @@ std::string convergence_svg(const std::vector<ConvergenceRow>& rows, PlotAxis x_
     << "font-size=\"12\">\n";
   s << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   s << "<text x=\"" << fmt((left + width - right) / 2) << "\" y=\"22\" text-anchor=\"middle\" "
-    << "font-size=\"15\">" << html_escape(title) << "</text>\n";
+    << "font-size=\"15\">" << xml_escape(title) << "</text>\n";
   // Grid lines and ticks: a labelled major tick per decade, minor ticks at 2..9.
   for (int k = xa.lo; k <= xa.hi; ++k) {
     double px = xa.map(std::pow(10.0, k));
@@ -255,11 +270,11 @@ std::string convergence_svg(const std::vector<ConvergenceRow>& rows, PlotAxis x_
       << fmt(ly) << "\" stroke=\"" << colour << "\" stroke-width=\"2\"/>\n";
     s << "<circle cx=\"" << lx + 12 << "\" cy=\"" << fmt(ly) << "\" r=\"3.5\" fill=\"" << colour
       << "\"/>\n";
-    s << "<text x=\"" << lx + 30 << "\" y=\"" << fmt(ly + 4) << "\">" << html_escape(order[si])
+    s << "<text x=\"" << lx + 30 << "\" y=\"" << fmt(ly + 4) << "\">" << xml_escape(order[si])
       << "</text>\n";
   }
   s << "</svg>\n";
   return s.str();
 }
 
-}  // namespace pt::web
+}  // namespace pt

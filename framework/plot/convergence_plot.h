@@ -1,5 +1,5 @@
-// The plot of the adaptive-sampling convergence table: error against time (or samples) for
-// each strategy, on log-log axes, written as a self-contained SVG.
+// The plot of a convergence table: error against time (or samples) for each strategy, on
+// log-log axes, written as a self-contained SVG (bench writes the table, the write-up shows it).
 #pragma once
 
 #include <filesystem>
@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace pt::web {
+namespace pt {
 
 /// One measurement: a strategy rendered with so many samples took so long and had this error.
 struct ConvergenceRow {
@@ -36,4 +36,4 @@ enum class PlotAxis { seconds, samples };
 std::string convergence_svg(const std::vector<ConvergenceRow>& rows, PlotAxis x,
                             const std::string& title, const std::string& source_name);
 
-}  // namespace pt::web
+}  // namespace pt

@@ -11,7 +11,7 @@
 #include <set>
 #include <sstream>
 
-#include "convergence_plot.h"
+#include "plot/convergence_plot.h"
 #include "directive.h"
 #include "katex_math.h"
 #include "math_spans.h"

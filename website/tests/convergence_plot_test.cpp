@@ -1,6 +1,6 @@
 // The convergence table is read from CSV or JSON and plotted on log-log axes: each strategy is
 // a line whose points sit where their values say, and bad rows are reported at their line.
-#include "convergence_plot.h"
+#include "plot/convergence_plot.h"
 
 #include <gtest/gtest.h>
 
@@ -8,11 +8,11 @@
 
 #include "test_folder.h"
 
-using pt::web::ConvergenceRow;
-using pt::web::PlotAxis;
-using pt::web::PlotError;
-using pt::web::convergence_svg;
-using pt::web::read_convergence_table;
+using pt::ConvergenceRow;
+using pt::PlotAxis;
+using pt::PlotError;
+using pt::convergence_svg;
+using pt::read_convergence_table;
 using pt::web::testing::TestFolder;
 
 namespace {
