@@ -1,0 +1,95 @@
+#include "render_job.h"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "1-raygen/pixel_loop.h"
+#include "1-raygen/scene_intersect.h"
+#include "2-bvh/bvh.h"
+#include "4-global/integrator.h"
+#include "5-adaptive/adaptive_sampling.h"
+
+namespace pt {
+
+std::unique_ptr<RayQuery> make_ray_query(const RenderSettings& settings, const Scene& scene) {
+  if (settings.accel == AccelKind::brute_force) return std::make_unique<BruteForce>(scene);
+  BvhOptions options;
+  options.split =
+      settings.accel == AccelKind::bvh_median ? BvhSplitMethod::median : BvhSplitMethod::sah;
+  options.max_leaf_size = settings.bvh_leaf_size;
+  return std::make_unique<Bvh>(scene, options);
+}
+
+std::string describe_bvh(const RenderSettings& settings, const Scene& scene) {
+  if (settings.accel == AccelKind::brute_force) return "accelerator: none (brute force)\n";
+  const std::unique_ptr<RayQuery> query = make_ray_query(settings, scene);
+  const BvhStats& s = static_cast<const Bvh&>(*query).stats();
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "bvh: %s, leaf size %d: %u nodes, %u leaves (mean %.2f, max %u primitives), "
+                "depth %u, SAH cost %.2f, built in %.1f ms\n",
+                s.split == BvhSplitMethod::sah ? "sah" : "median", settings.bvh_leaf_size, s.nodes,
+                s.leaves, s.mean_leaf_size, s.max_leaf_size, s.depth, s.sah_cost, s.build_ms);
+  return line;
+}
+
+std::vector<MaterialKind> rendered_material_kinds(const RenderSettings& settings) {
+  if (settings.shading == ShadingMode::normals) return {};
+  return {MaterialKind::diffuse, MaterialKind::mirror, MaterialKind::glass};
+}
+
+// Only camera rays are counted here: the integrator's shadow and bounce rays are not (yet).
+TracedRadianceFn make_radiance(const RenderSettings& settings, const Scene& scene,
+                               const RayQuery& query) {
+  if (settings.shading == ShadingMode::normals) {
+    return [&query](const Ray& ray, Rng&, TraceContext& context) {
+      context.rays.add();
+      return normal_shading(query, ray);
+    };
+  }
+  std::string error;
+  std::shared_ptr<Integrator> integrator = Integrator::create(settings, scene, query, &error);
+  if (!integrator) throw std::runtime_error(error);
+  return [integrator](const Ray& ray, Rng& rng, TraceContext& context) {
+    context.rays.add();
+    return integrator->radiance(ray, rng);
+  };
+}
+
+void apply_lens(const RenderSettings& settings, Camera* camera) {
+  camera->lens_radius = settings.lens_radius;
+  if (settings.focal_distance > 0.0f) camera->focal_distance = settings.focal_distance;
+}
+
+PixelFn make_pixel_fn(const RenderSettings& settings, const Camera& camera,
+                      const TracedRadianceFn& radiance) {
+  AdaptiveSettings adaptive;
+  adaptive.max_samples = settings.samples_per_pixel;
+  adaptive.batch = settings.adaptive_batch;
+  adaptive.tolerance = settings.adaptive_tolerance;
+  return [&settings, &camera, &radiance, adaptive](int x, int y, Rng& rng, TraceContext& context,
+                                                   PixelStats* stats) {
+    RadianceFn sample = [&radiance, &context](const Ray& ray, Rng& r) {
+      glm::vec3 L = radiance(ray, r, context);
+      if (!std::isfinite(L.x) || !std::isfinite(L.y) || !std::isfinite(L.z)) {
+        ++context.nonfinite_samples;
+        return glm::vec3(0.0f);
+      }
+      return L;
+    };
+    PixelRef px{x, y, settings.width, settings.height};
+    if (settings.adaptive)
+      estimate_pixel_adaptive(camera, px, adaptive, rng, sample, stats);
+    else
+      estimate_pixel(camera, px, settings.samples_per_pixel, rng, sample, stats);
+  };
+}
+
+RenderReport render_scene(const RenderSettings& settings, const Scene& scene,
+                          const RayQuery& query, Film* film, const TileRenderOptions& options) {
+  const TracedRadianceFn radiance = make_radiance(settings, scene, query);
+  return render_tiles(settings, make_pixel_fn(settings, scene.camera, radiance), film, options);
+}
+
+}  // namespace pt
