@@ -59,6 +59,8 @@ uint32_t WideBvh::collapse(const std::vector<BvhNode>& bin, uint32_t index, uint
     kids[n++] = bin[index].offset;
   }
   // Open the largest interior child until there are four: a big box is the one most rays enter.
+  // Its two children take its place, in order, so slots stay in the binary tree's order (ties in
+  // entry distance are visited as Part 2 visits them; see find_nearest).
   while (n < 4) {
     int open = -1;
     float area = -1.0f;
@@ -67,8 +69,10 @@ uint32_t WideBvh::collapse(const std::vector<BvhNode>& bin, uint32_t index, uint
         open = k, area = bin[kids[k]].bounds.surface_area();
     if (open < 0) break;
     const uint32_t parent = kids[open];
+    for (int k = n; k > open + 1; --k) kids[k] = kids[k - 1];
     kids[open] = parent + 1;
-    kids[n++] = bin[parent].offset;
+    kids[open + 1] = bin[parent].offset;
+    ++n;
   }
   const uint32_t self = uint32_t(nodes_.size());
   nodes_.emplace_back();
@@ -169,7 +173,11 @@ void WideBvh::find_nearest(const Ray& ray, Nearest* best) const {
       alignas(16) float t_entry[4];
       unsigned mask = intersect_box4(node.boxes, box_ray, cull, t_entry);
       if (mask == 0) break;
-      // Nearest child next; the others pushed farthest first, so they pop nearest first.
+      // Nearest child next; the others pushed farthest first, so they pop nearest first. Equal
+      // entry distances go in slot order, as Part 2 goes into its first child on a tie: the
+      // culling slack is relative, and a hit at a tiny t (a ray leaving a surface) can be off by
+      // more than that, so of two coplanar rivals in different boxes the one visited first wins;
+      // visiting them as Part 2 does keeps the answers the same as the binary tree's.
       StackEntry hits[4];
       int n = 0;
       while (mask) {
@@ -177,7 +185,7 @@ void WideBvh::find_nearest(const Ray& ray, Nearest* best) const {
         mask &= mask - 1;
         StackEntry h{node.child[k], node.count[k], t_entry[k]};
         int j = n++;
-        for (; j > 0 && hits[j - 1].t < h.t; --j) hits[j] = hits[j - 1];
+        for (; j > 0 && hits[j - 1].t <= h.t; --j) hits[j] = hits[j - 1];
         hits[j] = h;
       }
       for (int k = 0; k < n - 1; ++k) stack[top++] = hits[k];
