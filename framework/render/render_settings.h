@@ -32,6 +32,9 @@ struct RenderSettings {
   uint64_t seed = 0;                    ///< --seed: same seed, same image
   AccelKind accel = AccelKind::bvh_sah; ///< --bvh sah|median|none
   int bvh_leaf_size = 4;                ///< --leaf-size
+  /// --bvh-width: 2 traverses Part 2's binary tree itself; 4 the framework's 4-wide tree collapsed
+  /// from it (same answers, faster). The grader's Part 2 renders ask for 2.
+  int bvh_width = 4;
   ShadingMode shading = ShadingMode::light;
   bool russian_roulette = true;         ///< --no-rr turns it off
   bool mis = false;                     ///< --mis: combine light and BSDF samples
