@@ -9,6 +9,7 @@
 #include "2-bvh/bvh.h"
 #include "4-global/integrator.h"
 #include "5-adaptive/adaptive_sampling.h"
+#include "accel/wide_bvh.h"
 
 namespace pt {
 
@@ -18,20 +19,35 @@ std::unique_ptr<RayQuery> make_ray_query(const RenderSettings& settings, const S
   options.split =
       settings.accel == AccelKind::bvh_median ? BvhSplitMethod::median : BvhSplitMethod::sah;
   options.max_leaf_size = settings.bvh_leaf_size;
-  return std::make_unique<Bvh>(scene, options);
+  auto binary = std::make_unique<Bvh>(scene, options);
+  if (settings.bvh_width == 2) return binary;
+  return std::make_unique<WideBvh>(scene, *binary);
 }
 
 std::string describe_bvh(const RenderSettings& settings, const Scene& scene) {
   if (settings.accel == AccelKind::brute_force) return "accelerator: none (brute force)\n";
-  const std::unique_ptr<RayQuery> query = make_ray_query(settings, scene);
-  const BvhStats& s = static_cast<const Bvh&>(*query).stats();
-  char line[256];
+  BvhOptions options;
+  options.split =
+      settings.accel == AccelKind::bvh_median ? BvhSplitMethod::median : BvhSplitMethod::sah;
+  options.max_leaf_size = settings.bvh_leaf_size;
+  const Bvh binary(scene, options);
+  const BvhStats& s = binary.stats();
+  char line[512];
   std::snprintf(line, sizeof line,
                 "bvh: %s, leaf size %d: %u nodes, %u leaves (mean %.2f, max %u primitives), "
                 "depth %u, SAH cost %.2f, built in %.1f ms\n",
                 s.split == BvhSplitMethod::sah ? "sah" : "median", settings.bvh_leaf_size, s.nodes,
                 s.leaves, s.mean_leaf_size, s.max_leaf_size, s.depth, s.sah_cost, s.build_ms);
-  return line;
+  std::string text = line;
+  if (settings.bvh_width == 4) {
+    const WideBvhStats& w = WideBvh(scene, binary).stats();
+    std::snprintf(line, sizeof line,
+                  "bvh width 4 (traced): %u nodes (mean %.2f children), depth %u, collapsed in "
+                  "%.1f ms\n",
+                  w.nodes, w.mean_children, w.depth, w.build_ms);
+    text += line;
+  }
+  return text;
 }
 
 std::vector<MaterialKind> rendered_material_kinds(const RenderSettings& settings) {
