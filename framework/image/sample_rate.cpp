@@ -21,7 +21,7 @@ Image sample_rate_image(const Film& film, int max_samples) {
   const float max = max_samples > 0 ? float(max_samples) : 1.0f;
   for (int y = 0; y < film.height(); ++y)
     for (int x = 0; x < film.width(); ++x)
-      image.at(x, y) = sample_rate_colour(float(film.at(x, y).count) / max);
+      image.at(x, y) = sample_rate_colour(float(film.at(x, y).samples_taken()) / max);
   return image;
 }
 

@@ -6,7 +6,8 @@
 
 namespace pt {
 
-/// Maps each pixel's sample count n to a colour from blue (n = 0) through green to red
+/// Maps the samples each pixel took, n (PixelStats::samples_taken: adaptive sampling's decision
+/// samples included), to a colour from blue (n = 0) through green to red
 /// (n = max_samples), as the course's write-up shows it. The PNG is sRGB-encoded on writing,
 /// so the map's colours are given in linear values that encode to the intended ones.
 Image sample_rate_image(const Film& film, int max_samples);

@@ -31,7 +31,7 @@ RenderEstimate Film::estimate() const {
 
 long Film::total_samples() const {
   long total = 0;
-  for (const PixelStats& p : pixels_) total += p.count;
+  for (const PixelStats& p : pixels_) total += p.samples_taken();
   return total;
 }
 

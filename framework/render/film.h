@@ -25,7 +25,7 @@ class Film {
   Image mean_image() const;
   /// Mean, variance of one sample and sample count per pixel: what the graders compare.
   RenderEstimate estimate() const;
-  /// Samples taken over the whole film.
+  /// Samples taken over the whole film (decision samples included: PixelStats::samples_taken).
   long total_samples() const;
 
  private:

@@ -13,6 +13,11 @@ struct PixelStats {
   long count = 0;
   glm::dvec3 mean{0.0};
   glm::dvec3 m2{0.0};
+  /// Samples traced for the pixel but kept out of its estimate: adaptive sampling's decision
+  /// samples (Part 5), spent apart so that when to stop does not bias the value. The sample-rate
+  /// image and the render's sample total count them; `count`, which weighs the variance in the
+  /// statistical comparison of renders, does not.
+  long decision_samples = 0;
 
   void add(const glm::vec3& sample) {
     ++count;
@@ -21,6 +26,8 @@ struct PixelStats {
     mean += delta / double(count);
     m2 += delta * (x - mean);
   }
+  /// Every sample traced for the pixel, the estimate's and the decision's.
+  long samples_taken() const { return count + decision_samples; }
   /// Unbiased sample variance of one sample (0 with fewer than two samples).
   glm::dvec3 variance() const { return count > 1 ? m2 / double(count - 1) : glm::dvec3(0.0); }
 };

@@ -67,7 +67,7 @@ RenderReport render_tiles(const RenderSettings& settings, const PixelFn& pixel, 
     report.nonfinite_samples += c.nonfinite_samples;
   }
   for (int y = region.y0; y < region.y1; ++y)
-    for (int x = region.x0; x < region.x1; ++x) report.samples += film->at(x, y).count;
+    for (int x = region.x0; x < region.x1; ++x) report.samples += film->at(x, y).samples_taken();
   return report;
 }
 
