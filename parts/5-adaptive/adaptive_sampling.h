@@ -25,9 +25,21 @@ struct IlluminanceStats {
   double variance() const { return count > 1 ? m2 / double(count - 1) : 0.0; }
 };
 
+/// One sample in kDecisionStride of a pixel decides when to stop and never enters the pixel's
+/// value; the others form the value and never take part in the decision. The course's rule
+/// decides on the very samples it averages, so a heavy-tailed pixel whose batch happened to miss
+/// its rare bright samples looks converged and stops too dark: a quarter of the samples is the
+/// price of an answer that is unbiased whatever the pixel's distribution.
+constexpr int kDecisionStride = 4;
+
+/// Whether the pixel's `index`-th sample (from 0) is a decision sample: the last of each stride.
+inline bool is_decision_sample(long index) {
+  return index % kDecisionStride == kDecisionStride - 1;
+}
+
 /// The course's adaptive-sampling settings (-a BATCH TOL with -s as the maximum).
 struct AdaptiveSettings {
-  int max_samples = 64;    ///< -s: never more than this many samples
+  int max_samples = 64;    ///< -s: never more than this many samples, decision samples included
   int batch = 32;          ///< -a BATCH: convergence is checked after every batch
   float tolerance = 0.05f; ///< -a TOL: stop when the 95% confidence half-width ≤ TOL · mean
 };
@@ -37,13 +49,28 @@ inline double illuminance(const glm::vec3& rgb) {
   return 0.2126 * rgb.x + 0.7152 * rgb.y + 0.0722 * rgb.z;
 }
 
-/// Whether a pixel with these statistics has converged: I = 1.96·σ/√n ≤ tolerance·μ.
-/// A pixel whose samples are all equal (σ = 0) has converged, even a black one.
-bool pixel_converged(const IlluminanceStats& stats, float tolerance);
+/// The camera ray through a uniformly jittered point of pixel `px` (and of the lens, if any).
+Ray jittered_pixel_ray(const Camera& camera, const PixelRef& px, Rng& rng);
 
-/// Estimates pixel `px` like estimate_pixel, but in batches of settings.batch samples (jittered),
-/// stopping after the first batch that leaves the pixel converged, or at settings.max_samples.
-/// Every sample's radiance goes into *stats. Returns the number of samples taken.
+/// Whether a pixel has converged: the 95% confidence half-width of the estimate the pixel
+/// reports, I = 1.96·σ/√n_E, is at most tolerance·μ, where σ and μ come from the decision
+/// samples' illuminances (`decision`) and n_E = `estimate_count` is the number of samples in
+/// the estimate. Fewer than two decision samples say nothing about σ: not converged. A pixel
+/// whose decision samples are all equal (σ = 0) has converged, even a black one.
+bool pixel_converged(const IlluminanceStats& decision, long estimate_count, float tolerance);
+
+/// Samples pixel `px` in batches of settings.batch jittered samples, stopping after the first
+/// batch that leaves the pixel converged, or at settings.max_samples. Sample i goes into the
+/// decision statistics if is_decision_sample(i), else (its radiance) into *estimate, the pixel's
+/// value. Returns the number of samples taken, decision samples included.
+int sample_pixel_adaptive(const Camera& camera, const PixelRef& px,
+                          const AdaptiveSettings& settings, Rng& rng, const RadianceFn& radiance,
+                          PixelStats* estimate);
+
+/// Estimates pixel `px` like estimate_pixel, but adaptively (sample_pixel_adaptive), and records
+/// on *stats the samples that went into the decision only, so the sample-rate image shows every
+/// sample taken while the estimate's count stays that of the samples it averages. Returns the
+/// samples taken.
 int estimate_pixel_adaptive(const Camera& camera, const PixelRef& px,
                             const AdaptiveSettings& settings, Rng& rng,
                             const RadianceFn& radiance, PixelStats* stats);
