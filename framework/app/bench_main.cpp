@@ -20,6 +20,7 @@
 #include "1-raygen/camera_ray.h"
 #include "2-bvh/bvh.h"
 #include "accel/wide_bvh.h"
+#include "convergence.h"
 #include "math/float_error.h"
 #include "math/frame.h"
 #include "rays/ray_set.h"
@@ -234,6 +235,21 @@ json ratio(const json& a, const json& b) {
   return r;
 }
 
+/// Per set, Mrays/s on the most threads timed over Mrays/s on one thread (when both were timed).
+json speedup_over_one_thread(const json& mrays) {
+  json r = json::object();
+  for (auto set = mrays.begin(); set != mrays.end(); ++set) {
+    int most = 1;
+    for (auto t = set.value().begin(); t != set.value().end(); ++t)
+      most = std::max(most, std::stoi(t.key()));
+    const json& per = set.value();
+    if (most > 1 && per.contains("1") && per["1"].get<double>() > 0.0)
+      r[set.key()] = {{"threads", most},
+                      {"speedup", per[std::to_string(most)].get<double>() / per["1"].get<double>()}};
+  }
+  return r;
+}
+
 json bvh_stats_json(const BvhStats& s, int leaf) {
   return {{"split", s.split == BvhSplitMethod::sah ? "sah" : "median"},
           {"leaf_size", leaf},
@@ -245,6 +261,9 @@ json bvh_stats_json(const BvhStats& s, int leaf) {
 }
 
 int run(int argc, char** argv) {
+  // bench --convergence SCENE is a study of its own (error against time), with its own options.
+  for (int i = 1; i < argc; ++i)
+    if (std::string(argv[i]).rfind("--convergence", 0) == 0) return convergence_main(argc, argv);
   CLI::App app{"bench: BVH build time and rays per second (primary, diffuse, shadow) as JSON"};
   std::string scene_path, rays_prefix, write_prefix, split = "sah";
   int leaf = 4, width = 640, height = 480;
@@ -331,6 +350,7 @@ int run(int argc, char** argv) {
     std::vector<std::vector<float>> answers;
     time_sets(BvhTracer(*bvhs[k]), sets, threads, min_seconds, &mrays[k], &answers);
     entry["mrays_per_s"] = mrays[k];
+    entry["speedup"] = speedup_over_one_thread(mrays[k]);
     json agreement;
     for (size_t s = 0; s < sets.size(); ++s)
       if (!sets[s].answers.empty())
