@@ -125,8 +125,9 @@ adds.*
     md << R"(## Part 5: Adaptive sampling
 
 *Explain the per-pixel test that stops sampling a pixel once its confidence interval is small
-enough, and where the sampler spends its samples.* The sample-rate image shows, in colour, how
-many samples each pixel took (red many, blue few).
+enough, and where the sampler spends its samples.* Every fourth sample of a pixel only decides
+when to stop and the others only form its value, so stopping early does not bias the image. The
+sample-rate image shows, in colour, how many samples each pixel took (red many, blue few).
 
 )";
     md << "```render scene=" << quote(cb) << " flags=\"" << kSmall
