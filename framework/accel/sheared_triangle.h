@@ -40,9 +40,11 @@ struct ShearedRay {
 /// intersect_triangle(ray, p0, p1, p2, hit) with ray.tmax = tmax, for a ray prepared as `r`: the same
 /// answer and, on a hit, bit-identical t, b0, b1, b2. The operations below are Part 1's, in
 /// Part 1's order; change one only together with the other (the framework's accel tests compare
-/// them on millions of rays).
+/// them on millions of rays). On a hit, *t_error (when given) is Part 1's bound on how far t is
+/// from the exact distance.
 inline bool intersect_sheared_triangle(const ShearedRay& r, float tmax, const glm::vec3& p0,
-                                       const glm::vec3& p1, const glm::vec3& p2, TriangleHit* hit) {
+                                       const glm::vec3& p1, const glm::vec3& p2, TriangleHit* hit,
+                                       float* t_error = nullptr) {
   if (r.degenerate) return false;
   glm::vec3 a(p0[r.kx] - r.o[r.kx], p0[r.ky] - r.o[r.ky], p0[r.kz] - r.o[r.kz]);
   glm::vec3 b(p1[r.kx] - r.o[r.kx], p1[r.ky] - r.o[r.ky], p1[r.kz] - r.o[r.kz]);
@@ -85,6 +87,7 @@ inline bool intersect_sheared_triangle(const ShearedRay& r, float tmax, const gl
       3.0f * (gamma(3) * max_e * max_z + err_e * max_z + err_z * max_e) * std::abs(inv_det);
   if (t <= err_t) return false;
 
+  if (t_error) *t_error = err_t;
   hit->t = t;
   hit->b0 = e0 * inv_det;
   hit->b1 = e1 * inv_det;

@@ -1,5 +1,6 @@
 // The wide BVH's triangle test (shear once per ray) against Part 1's intersect_triangle: the same
-// answer and bit-identical t and barycentrics on millions of random and adversarial rays.
+// answer and bit-identical t and barycentrics on millions of random and adversarial rays; and its
+// four-triangle SIMD filter never turns away a triangle that test accepts.
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -10,6 +11,7 @@
 
 #include "1-raygen/triangle_intersect.h"
 #include "accel/sheared_triangle.h"
+#include "accel/triangle4.h"
 #include "math/float_error.h"
 #include "sampling/rng.h"
 #include "sampling/warp.h"
@@ -24,6 +26,7 @@ glm::vec3 random_in_cube(Rng& rng, float half) {
 /// Counts of one comparison run, and the first disagreement described.
 struct Tally {
   size_t cases = 0, hits = 0, differ = 0;
+  size_t filtered = 0, filter_lost = 0;  ///< lanes the four-triangle filter rejected; wrongly
   std::string first;
 };
 
@@ -34,6 +37,19 @@ void compare(const Ray& ray, const glm::vec3& p0, const glm::vec3& p1, const glm
   const bool hg = intersect_sheared_triangle(ShearedRay(ray), ray.tmax, p0, p1, p2, &got);
   ++tally->cases;
   tally->hits += hw;
+  // The same triangle in one lane of a packet (which lane varies), the others empty (NaN).
+  Triangle4 packet;
+  const int lane = int(tally->cases % 4);
+  const glm::vec3* corners[3] = {&p0, &p1, &p2};
+  for (int v = 0; v < 3; ++v)
+    for (int a = 0; a < 3; ++a)
+      for (int k = 0; k < 4; ++k)
+        packet.corner[v][a][k] = k == lane ? (*corners[v])[a] : std::nanf("");
+  const bool candidate =
+      (triangle4_candidates(packet, ShearedRay4(ShearedRay(ray)), ray.tmax) >> lane) & 1u;
+  tally->filtered += !candidate;
+  if (hg && !candidate && tally->filter_lost++ == 0)
+    tally->first += " [filter rejected a hit at t=" + std::to_string(got.t) + "]";
   const bool same = hw == hg && (!hw || (float_to_bits(want.t) == float_to_bits(got.t) &&
                                          float_to_bits(want.b0) == float_to_bits(got.b0) &&
                                          float_to_bits(want.b1) == float_to_bits(got.b1) &&
@@ -93,9 +109,12 @@ TEST(FrameworkAccelTriangle, BitIdenticalToPart1OnMillionsOfRays) {
     }
   }
   EXPECT_EQ(tally.differ, 0u) << tally.first;
+  EXPECT_EQ(tally.filter_lost, 0u) << tally.first;
+  EXPECT_GT(tally.filtered, (tally.cases - tally.hits) / 2) << "the filter should reject most misses";
   EXPECT_GT(tally.hits, tally.cases / 5) << "too few hits to be a test";
   EXPECT_LT(tally.hits, tally.cases) << "no misses at all";
-  std::printf("%zu cases, %zu hits, %zu differ\n", tally.cases, tally.hits, tally.differ);
+  std::printf("%zu cases, %zu hits, %zu differ; filter rejected %zu, wrongly %zu\n", tally.cases,
+              tally.hits, tally.differ, tally.filtered, tally.filter_lost);
 }
 
 TEST(FrameworkAccelTriangle, NonFiniteInputsAnswerAsPart1) {
@@ -118,6 +137,7 @@ TEST(FrameworkAccelTriangle, NonFiniteInputsAnswerAsPart1) {
       compare(ray, p0, q, p2, &tally);
     }
   EXPECT_EQ(tally.differ, 0u) << tally.first;
+  EXPECT_EQ(tally.filter_lost, 0u) << tally.first;
 }
 
 }  // namespace

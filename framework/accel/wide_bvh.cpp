@@ -93,8 +93,23 @@ uint32_t WideBvh::collapse(const std::vector<BvhNode>& bin, uint32_t index, uint
       if (c.count > 255)
         throw std::invalid_argument("WideBvh: a leaf of " + std::to_string(c.count) +
                                     " primitives (at most 255)");
-      node.child[k] = c.offset;
+      node.child[k] = uint32_t(packets_.size());
       node.count[k] = uint8_t(c.count);
+      // Lanes past the leaf's end and spheres' lanes hold NaN corners: never rejected by the
+      // filter, they are sorted out by the caller (which knows the count) and the exact tests.
+      for (uint32_t first = c.offset; first < c.offset + c.count; first += 4) {
+        Triangle4 packet;
+        for (int lane = 0; lane < 4; ++lane) {
+          const uint32_t i = first + uint32_t(lane);
+          const bool real = i < c.offset + c.count && is_triangle_[i];
+          const glm::vec3* p = real ? &corners_[i].p0 : nullptr;
+          for (int v = 0; v < 3; ++v)
+            for (int a = 0; a < 3; ++a)
+              packet.corner[v][a][lane] = real ? p[v][a] : std::nanf("");
+        }
+        packets_.push_back(packet);
+        packet_entry_.push_back(first);
+      }
       stats_.depth = std::max(stats_.depth, depth + 1);
     } else {
       node.child[k] = collapse(bin, kids[k], depth + 1);
@@ -132,9 +147,14 @@ struct StackEntry {
 template <bool kCheckEachCandidate>
 void WideBvh::find_nearest(const Ray& ray, Nearest* best) const {
   const ShearedRay sheared(ray);
+  const ShearedRay4 sheared4(sheared);
   const Box4Ray box_ray(ray);
   // What boxes and triangles are culled by: the best t stretched by Part 2's kHitDistanceSlack, so
   // a rival an ulp nearer in another leaf is still compared; primitives are judged on their t.
+  // A hit at a tiny t (a ray leaving a surface) can be off by far more than that relative slack:
+  // the bound then also covers twice the winner's own error bound on t, since a rival reporting
+  // the same t at the same spot (a duplicate, a coplanar neighbour) has an error of that size,
+  // and its box, entered no later than its exact distance, must not be culled.
   float cull = ray.tmax;
   StackEntry stack[kStackSize];
   int top = 0;
@@ -144,13 +164,19 @@ void WideBvh::find_nearest(const Ray& ray, Nearest* best) const {
     if (e.t > cull) continue;
     for (;;) {
       if (e.count > 0) {
-        for (uint32_t i = e.child, end = e.child + e.count; i < end; ++i) {
+        const uint32_t first = packet_entry_[e.child], end = first + e.count;
+        for (uint32_t p = e.child, base = first; base < end; ++p, base += 4) {
+          unsigned lanes = triangle4_candidates(packets_[p], sheared4, cull);
+          if (end - base < 4) lanes &= (1u << (end - base)) - 1u;
+          for (; lanes; lanes &= lanes - 1) {
+          const uint32_t i = base + uint32_t(__builtin_ctz(lanes));
           const uint32_t prim = order_[i];
-          float t;
+          float t, t_error = 0.0f;
           if (is_triangle_[i]) {
             TriangleHit th;
             const Corners& c = corners_[i];
-            if (!intersect_sheared_triangle(sheared, cull, c.p0, c.p1, c.p2, &th)) continue;
+            if (!intersect_sheared_triangle(sheared, cull, c.p0, c.p1, c.p2, &th, &t_error))
+              continue;
             if (!best->beaten_by(th.t, prim)) continue;
             t = th.t;
             if (kCheckEachCandidate) {
@@ -165,7 +191,9 @@ void WideBvh::find_nearest(const Ray& ray, Nearest* best) const {
           }
           best->prim = prim;
           best->t = t;
-          cull = std::min(ray.tmax, t + std::abs(t) * (kHitDistanceSlack - 1.0f));
+          cull = std::min(ray.tmax,
+                          t + std::max(std::abs(t) * (kHitDistanceSlack - 1.0f), 2.0f * t_error));
+          }
         }
         break;
       }
@@ -211,6 +239,7 @@ bool WideBvh::intersect(const Ray& ray, SurfaceHit* hit) const {
 bool WideBvh::occluded(const Ray& ray) const {
   if (nodes_.empty()) return false;
   const ShearedRay sheared(ray);
+  const ShearedRay4 sheared4(sheared);
   const Box4Ray box_ray(ray);
   // Any occluder will do: no distances kept, no sorting.
   StackEntry stack[kStackSize];
@@ -219,13 +248,19 @@ bool WideBvh::occluded(const Ray& ray) const {
   while (top > 0) {
     const StackEntry e = stack[--top];
     if (e.count > 0) {
-      for (uint32_t i = e.child, end = e.child + e.count; i < end; ++i) {
-        if (is_triangle_[i]) {
-          TriangleHit th;
-          const Corners& c = corners_[i];
-          if (intersect_sheared_triangle(sheared, ray.tmax, c.p0, c.p1, c.p2, &th)) return true;
-        } else if (primitive_occludes(scene_, order_[i], ray)) {
-          return true;
+      const uint32_t first = packet_entry_[e.child], end = first + e.count;
+      for (uint32_t p = e.child, base = first; base < end; ++p, base += 4) {
+        unsigned lanes = triangle4_candidates(packets_[p], sheared4, ray.tmax);
+        if (end - base < 4) lanes &= (1u << (end - base)) - 1u;
+        for (; lanes; lanes &= lanes - 1) {
+          const uint32_t i = base + uint32_t(__builtin_ctz(lanes));
+          if (is_triangle_[i]) {
+            TriangleHit th;
+            const Corners& c = corners_[i];
+            if (intersect_sheared_triangle(sheared, ray.tmax, c.p0, c.p1, c.p2, &th)) return true;
+          } else if (primitive_occludes(scene_, order_[i], ray)) {
+            return true;
+          }
         }
       }
       continue;

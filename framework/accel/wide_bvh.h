@@ -9,6 +9,7 @@
 
 #include "2-bvh/bvh.h"
 #include "accel/box4.h"
+#include "accel/triangle4.h"
 #include "geometry/ray_query.h"
 #include "scene/scene.h"
 
@@ -18,7 +19,7 @@ namespace pt {
 /// answers for all four. 128 bytes, two cache lines.
 struct alignas(64) WideNode {
   Box4 boxes;           ///< an unused slot holds an empty box, which no ray meets
-  uint32_t child[4];    ///< interior child: its node index; leaf: its first entry in leaf order
+  uint32_t child[4];    ///< interior child: its node index; leaf: its first triangle packet
   uint8_t count[4];     ///< leaf: how many primitives (1 .. 255); interior child or unused slot: 0
   uint8_t children = 0; ///< slots in use (1 .. 4)
 };
@@ -49,6 +50,8 @@ class WideBvh final : public RayQuery {
   const std::vector<WideNode>& nodes() const { return nodes_; }
   /// Primitive indices in leaf order (the binary tree's).
   const std::vector<uint32_t>& order() const { return order_; }
+  /// The leaf-order entry of lane 0 of packet `packet` (a leaf's entries fill its packets in order).
+  uint32_t packet_entry(uint32_t packet) const { return packet_entry_[packet]; }
 
   /// Entries a traversal stack can need: each visit pops one node and pushes at most three.
   static constexpr int kStackSize = 3 * Bvh::kMaxDepth + 4;
@@ -68,6 +71,10 @@ class WideBvh final : public RayQuery {
   std::vector<WideNode> nodes_;
   std::vector<uint32_t> order_;
   std::vector<Corners> corners_;
+  /// Each leaf's triangles four at a time, for the SIMD filter; packet_entry_ says where each
+  /// packet starts in leaf order.
+  std::vector<Triangle4> packets_;
+  std::vector<uint32_t> packet_entry_;
   std::vector<uint8_t> is_triangle_;  ///< per leaf-order entry
   WideBvhStats stats_;
 };

@@ -226,7 +226,8 @@ TEST(FrameworkWideBvhBuild, TreeIsWellFormed) {
         }
         if (n.count[k] > 0) {
           EXPECT_LE(n.count[k], leaf);
-          for (uint32_t e = n.child[k]; e < n.child[k] + n.count[k]; ++e) {
+          const uint32_t first = wide.packet_entry(n.child[k]);
+          for (uint32_t e = first; e < first + n.count[k]; ++e) {
             ++entry_seen[e];
             const Bounds3 pb = scene.primitive_bounds(wide.order()[e]);
             for (int a = 0; a < 3; ++a) {
