@@ -16,9 +16,12 @@ namespace pt {
 /// How to build a BVH.
 struct BvhOptions {
   BvhSplitMethod split = BvhSplitMethod::sah;
-  int max_leaf_size = 4;  ///< a node with more primitives is always split (1 .. kMaxLeafSize)
+  /// The most primitives a leaf may hold (1 .. kMaxLeafSize): a node with more is always split.
+  /// The midpoint split splits every node down to this size; the SAH also keeps a smaller node
+  /// whole when testing its primitives costs less than the best split it finds.
+  int max_leaf_size = 4;
   int sah_bins = 16;      ///< centroid bins per axis (2 .. kMaxSahBins)
-  SahCosts costs;
+  SahCosts costs;  ///< the SAH's weights, also used for BvhStats::sah_cost
 };
 
 /// One node of the flattened tree, 32 bytes, two to a cache line. Nodes are stored depth first:
@@ -75,6 +78,9 @@ class Bvh final : public RayQuery {
   };
   struct NearestState;
 
+  /// The student's nearest-first walk: visits leaves through intersect_leaf until no node left
+  /// can hold a nearer hit. intersect() makes the SurfaceHit of the winner afterwards.
+  void traverse_nearest(NearestState* state) const;
   void intersect_leaf(const BvhNode& leaf, NearestState* state) const;
   bool leaf_occludes(const BvhNode& leaf, const Ray& ray) const;
 

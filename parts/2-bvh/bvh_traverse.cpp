@@ -21,40 +21,50 @@ namespace pt {
 /// What shrinks is only the bound boxes and triangles are culled by: the best t stretched by
 /// kHitDistanceSlack, so a rival an ulp or two nearer in another leaf is still compared. It costs
 /// a few more box tests near ties, nothing else.
+///
+/// During the walk a triangle is only (primitive, t): the SurfaceHit (point, error bound,
+/// normals, material) is made once, for the winner, after the walk.
 struct Bvh::NearestState {
-  explicit NearestState(const Ray& ray_, SurfaceHit* out)
-      : ray(ray_), cull(ray_), box(ray_), hit(out) {}
+  explicit NearestState(const Ray& ray_) : ray(ray_), cull(ray_), box(ray_) {}
   const Ray& ray;
   Ray cull;  ///< the ray with tmax = the culling bound
   BoxRay box;
-  SurfaceHit* hit;
   uint32_t best = UINT32_MAX;  ///< primitive of the best hit, UINT32_MAX while there is none
   float best_t = 0.0f;
+  /// Make every candidate's SurfaceHit as it is found, so one Part 1 refuses to shade is never
+  /// the best (the rare second pass of intersect()).
+  bool in_full = false;
+  bool hit_made = false;  ///< `hit` is the best's SurfaceHit already (spheres; the second pass)
+  SurfaceHit hit;
+
   bool found() const { return best != UINT32_MAX; }
   bool beats_best(float t, uint32_t prim) const {
     return !found() || t < best_t || (t == best_t && prim < best);
+  }
+  void take(float t, uint32_t prim, bool made) {
+    best = prim;
+    best_t = t;
+    hit_made = made;
+    cull.tmax = std::min(ray.tmax, t + std::abs(t) * (kHitDistanceSlack - 1.0f));
   }
 };
 
 void Bvh::intersect_leaf(const BvhNode& leaf, NearestState* st) const {
   for (uint32_t i = leaf.offset, end = leaf.offset + leaf.count; i < end; ++i) {
     const uint32_t prim = order_[i];
-    if (scene_.is_triangle(prim)) {
-      // The cheap test on the leaf's own copy of the corners first; only a hit that beats the
-      // best becomes a full SurfaceHit (the same computation brute force makes, so the same
-      // answer, and a triangle Part 1 refuses to shade is refused here too).
+    if (scene_.is_triangle(prim) && !st->in_full) {
+      // The leaf's own copy of the corners is bit-identical to the scene's, so t is the very t
+      // brute force's intersect_primitive reports.
       TriangleHit th;
       const TriangleCorners& c = corners_[i];
-      if (!intersect_triangle(st->cull, c.p0, c.p1, c.p2, &th)) continue;
-      if (!st->beats_best(th.t, prim)) continue;
+      if (intersect_triangle(st->cull, c.p0, c.p1, c.p2, &th) && st->beats_best(th.t, prim))
+        st->take(th.t, prim, false);
+      continue;
     }
     SurfaceHit h;
-    if (!intersect_primitive(scene_, prim, st->ray, &h)) continue;
-    if (!st->beats_best(h.t, prim)) continue;
-    *st->hit = h;
-    st->best = prim;
-    st->best_t = h.t;
-    st->cull.tmax = std::min(st->ray.tmax, h.t + std::abs(h.t) * (kHitDistanceSlack - 1.0f));
+    if (!intersect_primitive(scene_, prim, st->ray, &h) || !st->beats_best(h.t, prim)) continue;
+    st->hit = h;
+    st->take(h.t, prim, true);
   }
 }
 
@@ -74,7 +84,26 @@ bool Bvh::leaf_occludes(const BvhNode& leaf, const Ray& ray) const {
 
 bool Bvh::intersect(const Ray& ray, SurfaceHit* hit) const {
   if (nodes_.empty()) return false;
-  NearestState st(ray, hit);
+  NearestState st(ray);
+  traverse_nearest(&st);
+  if (!st.found()) return false;
+  if (st.hit_made) {
+    *hit = st.hit;
+    return true;
+  }
+  if (intersect_primitive(scene_, st.best, ray, hit)) return true;
+  // Part 1 refuses to shade the winner (a triangle too thin in float to have a normal), so brute
+  // force never saw it: walk again making each candidate in full, as brute force does.
+  NearestState careful(ray);
+  careful.in_full = true;
+  traverse_nearest(&careful);
+  if (!careful.found()) return false;
+  *hit = careful.hit;
+  return true;
+}
+
+void Bvh::traverse_nearest(NearestState* state) const {
+  NearestState& st = *state;
   // BEGIN SOLUTION
   // Nodes still to visit, with the distance at which the ray enters them: a node that the ray
   // enters only beyond the best hit found since it was pushed is dropped unopened.
@@ -85,7 +114,7 @@ bool Bvh::intersect(const Ray& ray, SurfaceHit* hit) const {
   Entry stack[kMaxDepth];
   int top = 0;
   float t_root;
-  if (!intersect_box(nodes_[0].bounds, st.box, st.cull.tmax, &t_root)) return false;
+  if (!intersect_box(nodes_[0].bounds, st.box, st.cull.tmax, &t_root)) return;
   stack[top++] = {0, t_root};
   while (top > 0) {
     const Entry e = stack[--top];
@@ -112,18 +141,17 @@ bool Bvh::intersect(const Ray& ray, SurfaceHit* hit) const {
       }
     }
   }
-  return st.found();
+  return;
   // END SOLUTION
   // STUDENT: keep a stack of nodes to visit, each with the distance at which the ray enters it.
   // Start with the root if intersect_box(root.bounds, st.box, st.cull.tmax, ...) says so. Pop
   // a node (skip it if it starts beyond st.cull.tmax, which shrinks as hits are found); at a leaf
   // call intersect_leaf(node, &st); at an interior node test both children (the first is
   // index + 1, the second node.offset) and go into the nearer one, pushing the other.
-  // Return st.found().
-  PT_STUDENT_TODO("part 2", "Bvh::intersect");
+  // intersect() turns the best hit intersect_leaf kept into a SurfaceHit afterwards.
+  PT_STUDENT_TODO("part 2", "Bvh::traverse_nearest");
   for (const BvhNode& node : nodes_)
     if (node.is_leaf()) intersect_leaf(node, &st);
-  return st.found();
 }
 
 bool Bvh::occluded(const Ray& ray) const {
