@@ -31,8 +31,12 @@ WideBvh::WideBvh(const Scene& scene, const Bvh& binary) : scene_(scene) {
   }
   if (!bin.empty()) {
     nodes_.reserve(bin.size() / 2 + 1);
+    packets_.reserve(bin.size() / 2 + 1);
     collapse(bin, 0, 0);
   }
+  // The packets hold every corner: the exact test reads its lane from there.
+  corners_.clear();
+  corners_.shrink_to_fit();
   stats_.nodes = uint32_t(nodes_.size());
   size_t slots = 0;
   for (const WideNode& n : nodes_) {
@@ -174,7 +178,7 @@ void WideBvh::find_nearest(const Ray& ray, Nearest* best) const {
           float t, t_error = 0.0f;
           if (is_triangle_[i]) {
             TriangleHit th;
-            const Corners& c = corners_[i];
+            const Corners c = corners(p, i - base);
             if (!intersect_sheared_triangle(sheared, cull, c.p0, c.p1, c.p2, &th, &t_error))
               continue;
             if (!best->beaten_by(th.t, prim)) continue;
@@ -256,7 +260,7 @@ bool WideBvh::occluded(const Ray& ray) const {
           const uint32_t i = base + uint32_t(__builtin_ctz(lanes));
           if (is_triangle_[i]) {
             TriangleHit th;
-            const Corners& c = corners_[i];
+            const Corners c = corners(p, i - base);
             if (intersect_sheared_triangle(sheared, ray.tmax, c.p0, c.p1, c.p2, &th)) return true;
           } else if (primitive_occludes(scene_, order_[i], ray)) {
             return true;

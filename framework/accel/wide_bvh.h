@@ -64,13 +64,19 @@ class WideBvh final : public RayQuery {
   struct Nearest;
 
   uint32_t collapse(const std::vector<BvhNode>& binary, uint32_t index, uint32_t depth);
+  Corners corners(uint32_t packet, uint32_t lane) const {
+    const Triangle4& t = packets_[packet];
+    return {{t.corner[0][0][lane], t.corner[0][1][lane], t.corner[0][2][lane]},
+            {t.corner[1][0][lane], t.corner[1][1][lane], t.corner[1][2][lane]},
+            {t.corner[2][0][lane], t.corner[2][1][lane], t.corner[2][2][lane]}};
+  }
   template <bool kCheckEachCandidate>
   void find_nearest(const Ray& ray, Nearest* best) const;
 
   const Scene& scene_;
   std::vector<WideNode> nodes_;
   std::vector<uint32_t> order_;
-  std::vector<Corners> corners_;
+  std::vector<Corners> corners_;  ///< during the collapse only
   /// Each leaf's triangles four at a time, for the SIMD filter; packet_entry_ says where each
   /// packet starts in leaf order.
   std::vector<Triangle4> packets_;
