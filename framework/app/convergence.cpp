@@ -104,6 +104,27 @@ std::vector<ErrorPoint> points_of(const std::vector<ConvergenceMeasurement>& row
   return points;
 }
 
+/// Least-squares slope of log relMSE against log samples over the larger half of a strategy's
+/// rows (at least two): where the reference's noise and the first samples' bias matter least.
+double error_slope(const std::vector<ConvergenceMeasurement>& rows, const std::string& strategy) {
+  std::vector<std::pair<double, double>> xy;
+  for (const ConvergenceMeasurement& r : rows)
+    if (r.strategy == strategy && r.samples > 0.0 && r.rel_mse > 0.0)
+      xy.push_back({std::log(r.samples), std::log(r.rel_mse)});
+  if (xy.size() < 2) return std::numeric_limits<double>::quiet_NaN();
+  std::sort(xy.begin(), xy.end());
+  xy.erase(xy.begin(), xy.begin() + std::min(xy.size() - 2, xy.size() / 2));
+  double mx = 0.0, my = 0.0;
+  for (const auto& p : xy) mx += p.first, my += p.second;
+  mx /= double(xy.size()), my /= double(xy.size());
+  double sxy = 0.0, sxx = 0.0;
+  for (const auto& p : xy) {
+    sxy += (p.first - mx) * (p.second - my);
+    sxx += (p.first - mx) * (p.first - mx);
+  }
+  return sxx > 0.0 ? sxy / sxx : std::numeric_limits<double>::quiet_NaN();
+}
+
 std::string format(const char* fmt, double v) {
   char text[160];
   std::snprintf(text, sizeof text, fmt, v);
@@ -203,8 +224,18 @@ ConvergenceResult run_convergence(const ConvergenceOptions& o, std::ostream& log
     if (std::find(names.begin(), names.end(), r.strategy) == names.end()) names.push_back(r.strategy);
   const TimeToError light = time_to_error(points_of(result.rows, "light"), result.target);
   for (const std::string& name : names) {
-    StrategyTime t{name, time_to_error(points_of(result.rows, name), result.target), 0.0};
+    const std::vector<ErrorPoint> points = points_of(result.rows, name);
+    StrategyTime t;
+    t.strategy = name;
+    t.time = time_to_error(points, result.target);
+    double longest = 0.0;
+    for (const ErrorPoint& p : points) longest = std::max(longest, p.seconds);
+    if (t.time.extrapolated && t.time.seconds > kExtrapolationLimit * longest) {
+      t.beyond_reach = true;
+      t.time.seconds = std::numeric_limits<double>::quiet_NaN();
+    }
     t.ratio_to_light = t.time.seconds / light.seconds;
+    t.slope = error_slope(result.rows, name);
     result.times.push_back(t);
   }
 
@@ -246,16 +277,19 @@ std::string convergence_report(const ConvergenceResult& r) {
     s << std::left << std::setw(18) << m.strategy << std::right << std::setw(8) << m.budget
       << format("%10.2f", m.samples) << format("%11.3f", m.seconds)
       << format("%13.4e", m.rel_mse) << format("%13.4e", m.rmse) << "\n";
-  s << "\n" << format("time to reach relMSE %.4e", r.target) << " (" << r.target_source << "):\n";
+  s << "\n" << format("time to reach relMSE %.4e", r.target) << " (" << r.target_source
+    << "); [slope over the larger budgets: -1 unbiased, flatter means bias]:\n";
   for (const StrategyTime& t : r.times) {
     s << "  " << std::left << std::setw(18) << t.strategy << std::right;
-    if (std::isnan(t.time.seconds)) {
-      s << "  not reached (its error does not fall to it)\n";
-      continue;
-    }
-    s << format("%10.3f s", t.time.seconds) << (t.time.extrapolated ? " (extrapolated)" : "               ");
+    if (t.beyond_reach)
+      s << format("  not reached: beyond %g x its longest render", kExtrapolationLimit);
+    else if (std::isnan(t.time.seconds))
+      s << "  not reached: its error does not fall to it";
+    else
+      s << format("%10.3f s", t.time.seconds)
+        << (t.time.extrapolated ? " (extrapolated)" : "               ");
     if (std::isfinite(t.ratio_to_light)) s << format("  x%.3g light's time", t.ratio_to_light);
-    s << "\n";
+    s << format("   [relMSE ~ samples^%.2f]", t.slope) << "\n";
   }
   for (const StrategyTime& a : r.times)
     for (const StrategyTime& t : r.times)
@@ -301,6 +335,8 @@ std::vector<std::filesystem::path> write_convergence_outputs(const ConvergenceOp
     times.push_back({{"strategy", t.strategy},
                      {"seconds", number(t.time.seconds)},
                      {"extrapolated", t.time.extrapolated},
+                     {"beyond_reach", t.beyond_reach},
+                     {"slope_relmse_vs_samples", number(t.slope)},
                      {"ratio_to_light", number(t.ratio_to_light)}});
   }
   json doc = {

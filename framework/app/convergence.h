@@ -53,9 +53,18 @@ struct ConvergenceMeasurement {
 /// How long a strategy takes to reach the common target error.
 struct StrategyTime {
   std::string strategy;
-  TimeToError time;
+  TimeToError time;             ///< NaN seconds when not reached (see beyond_reach)
   double ratio_to_light = 0.0;  ///< its time / light importance's (NaN when either is unknown)
+  /// The straight line through its last points reaches the target only beyond
+  /// kExtrapolationLimit × its longest render: too far out to trust, so no time is given.
+  bool beyond_reach = false;
+  /// Log-log slope of relMSE against samples over its larger half of budgets: −1 for an unbiased
+  /// estimator measured against a clean reference; flatter means a bias (or a noisy reference).
+  double slope = 0.0;
 };
+
+/// How far past its longest render a strategy's time to the target may be extrapolated.
+constexpr double kExtrapolationLimit = 4.0;
 
 /// Render time of one budget on one thread and on every thread.
 struct ThreadSpeedup {

@@ -78,7 +78,7 @@ TEST_F(BenchConvergence, TinyStudyWritesATableThePlotterReads) {
       EXPECT_NEAR(t.time.seconds, by["light"][16].seconds, 1e-9);
       EXPECT_NEAR(t.ratio_to_light, 1.0, 1e-9);
     } else if (t.strategy == "hemisphere") {
-      EXPECT_GT(t.ratio_to_light, 1.0);
+      EXPECT_TRUE(t.beyond_reach || t.ratio_to_light > 1.0) << t.ratio_to_light;
     }
   EXPECT_TRUE(r.has_speedup);
   EXPECT_EQ(r.speedup.budget, 4);
