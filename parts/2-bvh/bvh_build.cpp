@@ -56,7 +56,9 @@ class BvhBuilder {
       refs_[i] = {b, i, size_exponent(b)};
     }
     if (n == 0) return;
-    bvh_.nodes_.reserve(2 * size_t(n / std::max(1, options_.max_leaf_size / 2)) + 1);
+    // A binary tree over n primitives has at most 2n - 1 nodes: reserving that once spares the
+    // copies of a growing vector (only the pages actually used are ever touched).
+    bvh_.nodes_.reserve(2 * size_t(n) - 1);
     build_node(0, n, 0);
 
     // The primitive order and the corner copies, in leaf order.
@@ -186,6 +188,24 @@ class BvhBuilder {
     maps[kSizeFamily] = {kSizeFamily, float(size_lo),
                          size_range <= bins ? 1.0f : float(bins) / float(size_range), bins};
 
+    if (end - begin == 2) {
+      // Every family that can cut two primitives cuts them one from the other, at the same cost:
+      // a third of all nodes are pairs, so they skip the bins.
+      for (int f = 0; f < kFamilies; ++f) {
+        if (!usable[f]) continue;
+        const float cost = options_.costs.traversal +
+                           options_.costs.intersection *
+                               (refs_[begin].bounds.surface_area() +
+                                refs_[begin + 1].bounds.surface_area()) / area;
+        best.leaf = !(cost < 2.0f * options_.costs.intersection) && leaf_allowed;
+        best.map = maps[f];
+        best.plane = maps[f](refs_[begin]) < maps[f](refs_[begin + 1]) ? maps[f](refs_[begin])
+                                                                       : maps[f](refs_[begin + 1]);
+        best.axis = f == kSizeFamily ? centroids.longest_axis() : f;
+        return best;
+      }
+      return best;
+    }
     for (int f = 0; f < kFamilies; ++f)
       if (usable[f])
         for (int k = 0; k < bins; ++k) bins_[f][k] = SahBin();

@@ -61,6 +61,55 @@ void add_wall(Document& doc, const std::string& name, const std::array<glm::vec3
 const glm::vec3 kFrontRightSphere{-0.4f, 0.3f, 0.3f};
 const glm::vec3 kBackLeftSphere{0.4f, -0.3f, 0.3f};
 
+// A bumpy sphere of radius `scale` (before its bumps) resting on the floor at (x, y).
+void add_bumpy_sphere(Document& doc, const std::string& name, const DenseParams& params, float scale,
+                      float x, float y) {
+  MeshGeometry g;
+  g.name = name;
+  g.mesh = make_dense_sphere(params);
+  const float lift = scale * float(1.0 + params.bump_amplitude) + 0.005f;
+  add_mesh(doc, std::move(g), "dense",
+           glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(x, y, lift)), glm::vec3(scale)));
+}
+
+// The million-triangle benchmark scene. Real scenes are not one evenly tessellated surface: a few
+// large triangles (floor, walls) bound the room, the objects in it differ in size and in
+// tessellation density by orders of magnitude, some surfaces are long thin slivers, and most of
+// the room is empty. That mix is what a split heuristic has to cope with (and what the surface
+// area heuristic was designed for), so the scene has one of each, scattered so that each kind is
+// seen by the camera: a detailed bumpy statue of most of the triangles (back left), three small
+// pebbles tessellated much more finely for their size (front), a coil of mid-sized triangles
+// (back right), and two columns floor to ceiling made only of slivers thousands of times longer
+// than they are wide (corners). Everything is procedural and deterministic.
+Document dense_room(Document doc, const SceneOptions& options) {
+  doc.materials.push_back(diffuse("dense", glm::vec3(0.75f)));
+  add_bumpy_sphere(doc, "statue", options.statue, 0.32f, 0.42f, -0.4f);
+  const int pebble_resolutions[3] = {40, 48, 64};
+  const float pebble_sizes[3] = {0.03f, 0.05f, 0.08f};
+  const glm::vec2 pebble_places[3] = {{0.1f, 0.55f}, {-0.25f, 0.35f}, {-0.55f, 0.6f}};
+  for (int i = 0; i < 3; ++i) {
+    DenseParams p;
+    p.resolution = pebble_resolutions[i];
+    p.bump_frequency = 13.0;
+    add_bumpy_sphere(doc, "pebble" + std::to_string(i + 1), p, pebble_sizes[i], pebble_places[i].x,
+                     pebble_places[i].y);
+  }
+  MeshGeometry coil;
+  coil.name = "coil";
+  coil.mesh = make_coil(options.room_coil);
+  add_mesh(doc, std::move(coil), "dense",
+           glm::translate(glm::mat4(1.0f), glm::vec3(-0.45f, -0.35f, float(options.room_coil.tube_radius) + 0.005f)));
+  const glm::vec2 column_places[2] = {{0.78f, 0.62f}, {-0.8f, -0.72f}};
+  for (int i = 0; i < 2; ++i) {
+    MeshGeometry column;
+    column.name = "column" + std::to_string(i + 1);
+    column.mesh = make_column(options.column);
+    add_mesh(doc, std::move(column), "dense",
+             glm::translate(glm::mat4(1.0f), glm::vec3(column_places[i], 0.0f)));
+  }
+  return doc;
+}
+
 }  // namespace
 
 std::vector<SceneEntry> scene_entries() {
@@ -69,7 +118,11 @@ std::vector<SceneEntry> scene_entries() {
       {"cornell_spheres", "the box with two diffuse spheres", true},
       {"cornell_mirror_glass", "the box with a mirror sphere and a glass sphere (ior 1.5)", true},
       {"cornell_coil", "the box with a closed tube coiled along a helix (smooth normals)", true},
-      {"dense_mesh", "the box with a bumpy sphere of over a million triangles", false},
+      {"dense_mesh",
+       "the box with a million triangles of very different sizes: a detailed bumpy statue, "
+       "pebbles, a coil and two thin columns",
+       false},
+      {"dense_sphere", "the box with one bumpy sphere of a million near-equal triangles", false},
   };
 }
 
@@ -132,7 +185,8 @@ Document build_scene(const std::string& name, const SceneOptions& options) {
              glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, float(options.coil.tube_radius) + 0.03f)));
     return doc;
   }
-  if (name == "dense_mesh") {
+  if (name == "dense_mesh") return dense_room(std::move(doc), options);
+  if (name == "dense_sphere") {
     doc.materials.push_back(diffuse("dense", glm::vec3(0.75f)));
     MeshGeometry g;
     g.name = "denseSphere";

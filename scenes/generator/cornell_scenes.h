@@ -22,7 +22,12 @@ std::vector<SceneEntry> scene_entries();
 /// Knobs of the procedural meshes, so tests can build smaller ones than the files hold.
 struct SceneOptions {
   CoilParams coil;
-  DenseParams dense;
+  DenseParams dense;  ///< dense_sphere's sphere
+  /// dense_mesh's statue: most of its million triangles (12 · 268² = 861,888).
+  DenseParams statue{268, 0.08, 7.0};
+  /// dense_mesh's coil: thinner, tighter and more finely tessellated than cornell_coil's.
+  CoilParams room_coil{0.12, 0.06, 6.0, 0.02, 96, 24, 4};
+  ColumnParams column;  ///< dense_mesh's two columns
 };
 
 /// The course's Cornell box: a 2 × 2 × 1.5 box (red left wall, blue right wall, white floor,

@@ -204,6 +204,38 @@ Mesh make_dense_sphere(const DenseParams& p) {
   return mesh;
 }
 
+uint64_t column_triangle_count(const ColumnParams& p) {
+  require(p.sides >= 3, "column: sides must be at least 3");
+  return 4u * uint64_t(p.sides);
+}
+
+Mesh make_column(const ColumnParams& p) {
+  require(p.sides >= 3, "column: sides must be at least 3");
+  require(p.radius > 0 && p.height > 0, "column: radius and height must be positive");
+  Mesh mesh;
+  RingSweep sweep(mesh, p.sides);
+  const glm::dvec3 up(0.0, 0.0, 1.0);
+  auto ring = [&](double z) {
+    uint32_t first = 0;
+    for (int j = 0; j < p.sides; ++j) {
+      const double theta = 2.0 * kPi * j / p.sides;
+      const glm::dvec3 radial(std::cos(theta), std::sin(theta), 0.0);
+      const uint32_t v = sweep.add_vertex(p.radius * radial + z * up, radial);
+      if (j == 0) first = v;
+    }
+    return first;
+  };
+  // Swept upwards: bottom pole, two rings, top pole.
+  const uint32_t bottom = sweep.add_vertex(glm::dvec3(0.0), -up);
+  const uint32_t low = ring(0.0), high = ring(p.height);
+  const uint32_t top = sweep.add_vertex(p.height * up, up);
+  sweep.fan_before(bottom, low);
+  sweep.band(low, high);
+  sweep.fan_after(high, top);
+  set_smooth_normals(mesh);
+  return mesh;
+}
+
 void set_smooth_normals(Mesh& mesh) {
   std::vector<glm::dvec3> sum(mesh.positions.size(), glm::dvec3(0.0));
   for (const auto& t : mesh.triangles) {

@@ -53,6 +53,16 @@ struct DenseParams {
 Mesh make_dense_sphere(const DenseParams& params);
 uint64_t dense_sphere_triangle_count(const DenseParams& params);
 
+/// A closed cylinder about +Z from z = 0 to `height`: one band of `sides` quads round it and a
+/// fan at each end, so every triangle is a long thin sliver (sides and cap wedges alike).
+struct ColumnParams {
+  double radius = 0.03;
+  double height = 1.4;
+  int sides = 2048;
+};
+Mesh make_column(const ColumnParams& params);
+uint64_t column_triangle_count(const ColumnParams& params);
+
 /// Per-vertex normals as the area-weighted sum of the faces round each vertex, normalised.
 /// Sets normal_indices = triangles.
 void set_smooth_normals(Mesh& mesh);

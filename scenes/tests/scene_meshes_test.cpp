@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include "generator/cornell_scenes.h"
 #include "generator/mesh.h"
 
 namespace {
@@ -177,6 +178,43 @@ TEST(SceneMeshes, DenseSphereAtFullSizeHasAMillionTriangles) {
   expect_normals_agree_with_winding(m, "dense full size");
   // Unit sphere with bumps averaging out: volume near 4/3 π.
   EXPECT_NEAR(signed_volume(m), 4.0 / 3.0 * 3.14159265358979323846, 0.1);
+}
+
+TEST(SceneMeshes, ColumnIsClosedAndMadeOfSlivers) {
+  scenegen::ColumnParams p;
+  Mesh m = scenegen::make_column(p);
+  EXPECT_EQ(m.triangles.size(), scenegen::column_triangle_count(p));
+  expect_closed_manifold(m, "column");
+  expect_normals_agree_with_winding(m, "column");
+  EXPECT_NEAR(signed_volume(m) / (3.14159265358979323846 * p.radius * p.radius * p.height), 1.0, 0.01);
+  // The side triangles are at least a thousand times longer than they are wide: longest edge
+  // over the height onto it.
+  const auto& t = m.triangles[2 * p.sides];  // past the bottom fan: the first of the band
+  const glm::vec3 a = m.positions[t[0]], b = m.positions[t[1]], c = m.positions[t[2]];
+  const float longest = std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)});
+  const float height = glm::length(glm::cross(b - a, c - a)) / longest;
+  EXPECT_GT(longest / height, 1000.0f);
+}
+
+TEST(SceneMeshes, DenseRoomHasAMillionTrianglesOfVeryDifferentSizes) {
+  const scenegen::Document doc = scenegen::build_scene("dense_mesh");
+  size_t triangles = 0;
+  double smallest = 1e30, largest = 0.0;
+  for (const auto& g : doc.meshes) {
+    triangles += g.mesh.triangles.size();
+    for (const auto& t : g.mesh.triangles) {
+      const double area = 0.5 * glm::length(glm::cross(g.mesh.positions[t[1]] - g.mesh.positions[t[0]],
+                                                       g.mesh.positions[t[2]] - g.mesh.positions[t[0]]));
+      smallest = std::min(smallest, area), largest = std::max(largest, area);
+    }
+    // Every object is closed (the walls are single quads).
+    if (g.mesh.triangles.size() > 2) expect_closed_manifold(g.mesh, g.name);
+  }
+  EXPECT_GE(triangles, 1000000u);
+  EXPECT_LE(triangles, 1010000u);
+  EXPECT_GE(doc.meshes.size(), 6u + 5u) << "the box's walls and at least five objects";
+  // In each mesh's own coordinates (before node scales): still many orders of magnitude apart.
+  EXPECT_GT(largest / smallest, 1e5);
 }
 
 }  // namespace
