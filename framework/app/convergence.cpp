@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ctime>
 #include <cstdio>
 #include <fstream>
 #include <iomanip>
@@ -246,14 +247,17 @@ ConvergenceResult run_convergence(const ConvergenceOptions& o, std::ostream& log
     RenderSettings s = with_strategy(base, kStrategies[1]);
     s.samples_per_pixel = budget;
     Film all_film(s.width, s.height), one_film(s.width, s.height);
+    const std::clock_t cpu_start = std::clock();
     RenderReport all = study.render(s, &all_film);
+    const double cpu_all = double(std::clock() - cpu_start) / CLOCKS_PER_SEC;
     s.threads = 1;
     RenderReport one = study.render(s, &one_film);
     result.has_speedup = true;
-    result.speedup = {budget, all.threads, one.seconds, all.seconds};
+    result.speedup = {budget, all.threads, one.seconds, all.seconds, cpu_all};
     log << "speed-up at " << budget << " spp (light): 1 thread " << format("%.3f s", one.seconds)
         << ", " << all.threads << " threads " << format("%.3f s", all.seconds)
-        << format(": x%.2f", result.speedup.speedup()) << "\n";
+        << format(": x%.2f", result.speedup.speedup())
+        << format(" (%.2f cores busy)", result.speedup.cores_busy()) << "\n";
   }
   return result;
 }
@@ -300,7 +304,13 @@ std::string convergence_report(const ConvergenceResult& r) {
   if (r.has_speedup)
     s << "\nthread speed-up at " << r.speedup.budget << " spp (light): 1 thread "
       << format("%.3f s", r.speedup.seconds_one) << ", " << r.speedup.threads << " threads "
-      << format("%.3f s", r.speedup.seconds_all) << format(": x%.2f\n", r.speedup.speedup());
+      << format("%.3f s", r.speedup.seconds_all) << format(": x%.2f", r.speedup.speedup())
+      << format("; the all-thread render kept %.2f cores busy", r.speedup.cores_busy())
+      << (r.speedup.cores_busy() < 0.8 * r.speedup.threads
+              ? " (fewer than its threads: other work shared the machine, so the wall-time "
+                "speed-up understates the renderer's)"
+              : "")
+      << "\n";
   return s.str();
 }
 
@@ -369,7 +379,9 @@ std::vector<std::filesystem::path> write_convergence_outputs(const ConvergenceOp
                       {"threads", r.speedup.threads},
                       {"seconds_1_thread", r.speedup.seconds_one},
                       {"seconds_all_threads", r.speedup.seconds_all},
-                      {"speedup", r.speedup.speedup()}};
+                      {"speedup", r.speedup.speedup()},
+                      {"cpu_seconds_all_threads", r.speedup.cpu_seconds_all},
+                      {"cores_busy_all_threads", r.speedup.cores_busy()}};
   {
     std::ofstream out(js);
     out << doc.dump(2) << "\n";

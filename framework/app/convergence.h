@@ -71,7 +71,11 @@ struct ThreadSpeedup {
   int budget = 0;
   int threads = 0;
   double seconds_one = 0.0, seconds_all = 0.0;
+  /// Process CPU time of the all-thread render: cpu_all / seconds_all is how many cores it kept
+  /// busy, which tells a renderer that does not scale from a machine others are using.
+  double cpu_seconds_all = 0.0;
   double speedup() const { return seconds_all > 0.0 ? seconds_one / seconds_all : 0.0; }
+  double cores_busy() const { return seconds_all > 0.0 ? cpu_seconds_all / seconds_all : 0.0; }
 };
 
 /// Everything a study measured.
