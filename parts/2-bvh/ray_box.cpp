@@ -1,5 +1,7 @@
 #include "2-bvh/ray_box.h"
 
+#include <cmath>
+
 #include "math/float_error.h"
 #include "student/todo.h"
 
@@ -15,13 +17,12 @@ bool intersect_box(const Bounds3& box, const BoxRay& ray, float tmax, float* t_e
   constexpr float kNearScale = 1.0f - 2.0f * gamma(3);
   float t0 = ray.tmin, t1 = tmax;
   for (int a = 0; a < 3; ++a) {
-    float tn = (box.lo[a] - ray.o[a]) * ray.inv_d[a];
-    float tf = (box.hi[a] - ray.o[a]) * ray.inv_d[a];
-    if (tn > tf) {
-      const float s = tn;
-      tn = tf;
-      tf = s;
-    }
+    // Near and far planes chosen by the direction's sign, not by comparing the distances: for a
+    // -0 component with the origin on a plane, that distance is 0 · -inf = NaN, and a comparison
+    // would pair the NaN with the other plane's -inf and turn away a ray running along the face.
+    const bool negative = std::signbit(ray.inv_d[a]);
+    float tn = ((negative ? box.hi[a] : box.lo[a]) - ray.o[a]) * ray.inv_d[a];
+    float tf = ((negative ? box.lo[a] : box.hi[a]) - ray.o[a]) * ray.inv_d[a];
     tf *= tf > 0.0f ? kFarScale : kNearScale;
     tn *= tn > 0.0f ? kNearScale : kFarScale;
     // Written so that a NaN distance (origin on the slab plane, direction parallel) keeps t0/t1.
@@ -32,7 +33,8 @@ bool intersect_box(const Bounds3& box, const BoxRay& ray, float tmax, float* t_e
   return t0 <= t1;
   // END SOLUTION
   // STUDENT: for each axis, the distances where the ray crosses the box's two planes
-  // ((lo - o) · inv_d and (hi - o) · inv_d), ordered near/far; scale the far one up by
+  // ((lo - o) · inv_d and (hi - o) · inv_d), near/far chosen by the sign of inv_d
+  // (std::signbit, so that -0 counts as negative); scale the far one up by
   // 1 + 2·gamma(3) and move the near one towards -inf by as much, so rounding never lets a ray
   // slip past; keep the largest near and the smallest
   // far, starting from ray.tmin and tmax (written so that a NaN leaves them unchanged). The ray

@@ -49,6 +49,13 @@ TEST(Part2RayBox, RaysAlongFacesAndFlatBoxesCount) {
   // -0 directions: 1/-0 is -inf, and the slab must still be either everything or nothing.
   EXPECT_TRUE(box_hit(kUnit, {0.5f, 0.5f, -1}, {-0.0f, -0.0f, 1}, 0, inf, &t));
   EXPECT_FALSE(box_hit(kUnit, {1.5f, 0.5f, -1}, {-0.0f, 0.0f, 1}, 0, inf, &t));
+  // -0 along a face: the origin on the plane gives 0 · -inf = NaN for that plane, which must not
+  // be paired with the other plane's -inf and lose the box (+0 and -0 must answer alike).
+  for (float zero : {0.0f, -0.0f}) {
+    EXPECT_TRUE(box_hit(kUnit, {0.5f, 1, -1}, {0, zero, 1}, 0, inf, &t)) << zero;  // on hi plane
+    EXPECT_TRUE(box_hit(kUnit, {0.5f, 0, -1}, {0, zero, 1}, 0, inf, &t)) << zero;  // on lo plane
+    EXPECT_TRUE(box_hit(flat, {-1, 0.5f, 2}, {1, 0, zero}, 0, inf, &t)) << zero;
+  }
 }
 
 TEST(Part2RayBox, NeverLosesAHitToRounding) {
