@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 #include <stdexcept>
 #include <string>
 
@@ -10,6 +14,26 @@
 #include "accel/sheared_triangle.h"
 
 namespace pt {
+
+namespace {
+
+/// Asks the kernel to back a reserved but untouched array with huge pages where it can: the
+/// arrays of a million-triangle tree span tens of megabytes, and faulting them in 4 KiB at a time
+/// costs more than the collapse itself on a virtual machine. Only a hint: nothing changes if the
+/// kernel says no.
+template <class T>
+void prefer_huge_pages(const std::vector<T>& v) {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  constexpr uintptr_t kHuge = uintptr_t(2) << 20;
+  const uintptr_t begin = (reinterpret_cast<uintptr_t>(v.data()) + kHuge - 1) & ~(kHuge - 1);
+  const uintptr_t end = reinterpret_cast<uintptr_t>(v.data() + v.capacity()) & ~(kHuge - 1);
+  if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+#else
+  (void)v;
+#endif
+}
+
+}  // namespace
 
 WideBvh::WideBvh(const Scene& scene, const Bvh& binary) : scene_(scene) {
   const auto start = std::chrono::steady_clock::now();
@@ -20,23 +44,20 @@ WideBvh::WideBvh(const Scene& scene, const Bvh& binary) : scene_(scene) {
                                 " primitives but the scene has " +
                                 std::to_string(scene.primitive_count()) +
                                 " (was it built over another scene?)");
-  corners_.resize(order_.size());
   is_triangle_.resize(order_.size());
-  for (size_t i = 0; i < order_.size(); ++i) {
-    const uint32_t prim = order_[i];
-    is_triangle_[i] = scene.is_triangle(prim);
-    if (!is_triangle_[i]) continue;
-    const Triangle& t = scene.triangles[prim];
-    corners_[i] = {scene.positions[t.v[0]], scene.positions[t.v[1]], scene.positions[t.v[2]]};
-  }
+  for (size_t i = 0; i < order_.size(); ++i) is_triangle_[i] = scene.is_triangle(order_[i]);
   if (!bin.empty()) {
-    nodes_.reserve(bin.size() / 2 + 1);
-    packets_.reserve(bin.size() / 2 + 1);
+    // Upper bounds, so nothing is moved while the tree grows: every wide node but a lone root
+    // leaf's consumes a binary interior node, and every packet holds at least one entry.
+    size_t interior = 0;
+    for (const BvhNode& n : bin) interior += !n.is_leaf();
+    nodes_.reserve(interior + 1);
+    packets_.reserve(order_.size());
+    packet_entry_.reserve(order_.size());
+    prefer_huge_pages(nodes_);
+    prefer_huge_pages(packets_);
     collapse(bin, 0, 0);
   }
-  // The packets hold every corner: the exact test reads its lane from there.
-  corners_.clear();
-  corners_.shrink_to_fit();
   stats_.nodes = uint32_t(nodes_.size());
   size_t slots = 0;
   for (const WideNode& n : nodes_) {
@@ -48,6 +69,29 @@ WideBvh::WideBvh(const Scene& scene, const Bvh& binary) : scene_(scene) {
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
+void WideBvh::add_packets(uint32_t first, uint32_t count) {
+  constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+  // Lanes past the leaf's end and spheres' lanes hold NaN corners: never rejected by the
+  // filter, they are sorted out by the caller (which knows the count) and the exact tests.
+  for (uint32_t base = first; base < first + count; base += 4) {
+    Triangle4& packet = packets_.emplace_back();
+    for (int lane = 0; lane < 4; ++lane) {
+      const uint32_t i = base + uint32_t(lane);
+      if (i < first + count && is_triangle_[i]) {
+        const Triangle& t = scene_.triangles[order_[i]];
+        for (int v = 0; v < 3; ++v) {
+          const glm::vec3& p = scene_.positions[t.v[v]];
+          for (int a = 0; a < 3; ++a) packet.corner[v][a][lane] = p[a];
+        }
+      } else {
+        for (int v = 0; v < 3; ++v)
+          for (int a = 0; a < 3; ++a) packet.corner[v][a][lane] = kNaN;
+      }
+    }
+    packet_entry_.push_back(base);
+  }
+}
+
 uint32_t WideBvh::collapse(const std::vector<BvhNode>& bin, uint32_t index, uint32_t depth) {
   if (depth > uint32_t(Bvh::kMaxDepth))
     throw std::invalid_argument("WideBvh: the binary tree is deeper than Bvh::kMaxDepth (" +
@@ -55,6 +99,7 @@ uint32_t WideBvh::collapse(const std::vector<BvhNode>& bin, uint32_t index, uint
   stats_.depth = std::max(stats_.depth, depth + 1);
   // A binary leaf at the root still gets a node above it, so every traversal starts the same way.
   uint32_t kids[4];
+  float area[4];
   int n = 0;
   if (bin[index].is_leaf()) {
     kids[n++] = index;
@@ -62,64 +107,54 @@ uint32_t WideBvh::collapse(const std::vector<BvhNode>& bin, uint32_t index, uint
     kids[n++] = index + 1;
     kids[n++] = bin[index].offset;
   }
+  for (int k = 0; k < n; ++k) area[k] = bin[kids[k]].bounds.surface_area();
   // Open the largest interior child until there are four: a big box is the one most rays enter.
   // Its two children take its place, in order, so slots stay in the binary tree's order (ties in
   // entry distance are visited as Part 2 visits them; see find_nearest).
   while (n < 4) {
     int open = -1;
-    float area = -1.0f;
     for (int k = 0; k < n; ++k)
-      if (!bin[kids[k]].is_leaf() && bin[kids[k]].bounds.surface_area() > area)
-        open = k, area = bin[kids[k]].bounds.surface_area();
+      if (!bin[kids[k]].is_leaf() && (open < 0 || area[k] > area[open])) open = k;
     if (open < 0) break;
     const uint32_t parent = kids[open];
-    for (int k = n; k > open + 1; --k) kids[k] = kids[k - 1];
+    for (int k = n; k > open + 1; --k) kids[k] = kids[k - 1], area[k] = area[k - 1];
     kids[open] = parent + 1;
     kids[open + 1] = bin[parent].offset;
+    area[open] = bin[kids[open]].bounds.surface_area();
+    area[open + 1] = bin[kids[open + 1]].bounds.surface_area();
     ++n;
   }
   const uint32_t self = uint32_t(nodes_.size());
-  nodes_.emplace_back();
-  WideNode node;
-  node.children = uint8_t(n);
-  for (int k = 0; k < 4; ++k) {
-    const Bounds3 b = k < n ? bin[kids[k]].bounds : Bounds3{};
-    for (int a = 0; a < 3; ++a) {
-      node.boxes.bounds[a][k] = b.lo[a];
-      node.boxes.bounds[3 + a][k] = b.hi[a];
+  {
+    WideNode& node = nodes_.emplace_back();
+    node.children = uint8_t(n);
+    for (int k = 0; k < 4; ++k) {
+      const Bounds3 b = k < n ? bin[kids[k]].bounds : Bounds3{};
+      for (int a = 0; a < 3; ++a) {
+        node.boxes.bounds[a][k] = b.lo[a];
+        node.boxes.bounds[3 + a][k] = b.hi[a];
+      }
+      node.child[k] = 0;
+      node.count[k] = 0;
     }
-    node.child[k] = 0;
-    node.count[k] = 0;
   }
+  // nodes_ never reallocates (reserved for the most nodes a collapse makes), but the children
+  // are written through the index all the same, so the code does not lean on that.
   for (int k = 0; k < n; ++k) {
     const BvhNode& c = bin[kids[k]];
     if (c.is_leaf()) {
       if (c.count > 255)
         throw std::invalid_argument("WideBvh: a leaf of " + std::to_string(c.count) +
                                     " primitives (at most 255)");
-      node.child[k] = uint32_t(packets_.size());
-      node.count[k] = uint8_t(c.count);
-      // Lanes past the leaf's end and spheres' lanes hold NaN corners: never rejected by the
-      // filter, they are sorted out by the caller (which knows the count) and the exact tests.
-      for (uint32_t first = c.offset; first < c.offset + c.count; first += 4) {
-        Triangle4 packet;
-        for (int lane = 0; lane < 4; ++lane) {
-          const uint32_t i = first + uint32_t(lane);
-          const bool real = i < c.offset + c.count && is_triangle_[i];
-          const glm::vec3* p = real ? &corners_[i].p0 : nullptr;
-          for (int v = 0; v < 3; ++v)
-            for (int a = 0; a < 3; ++a)
-              packet.corner[v][a][lane] = real ? p[v][a] : std::nanf("");
-        }
-        packets_.push_back(packet);
-        packet_entry_.push_back(first);
-      }
+      nodes_[self].child[k] = uint32_t(packets_.size());
+      nodes_[self].count[k] = uint8_t(c.count);
+      add_packets(c.offset, c.count);
       stats_.depth = std::max(stats_.depth, depth + 1);
     } else {
-      node.child[k] = collapse(bin, kids[k], depth + 1);
+      const uint32_t child = collapse(bin, kids[k], depth + 1);
+      nodes_[self].child[k] = child;
     }
   }
-  nodes_[self] = node;
   return self;
 }
 

@@ -64,6 +64,8 @@ class WideBvh final : public RayQuery {
   struct Nearest;
 
   uint32_t collapse(const std::vector<BvhNode>& binary, uint32_t index, uint32_t depth);
+  /// Appends the packets of the leaf-order entries [first, first + count).
+  void add_packets(uint32_t first, uint32_t count);
   Corners corners(uint32_t packet, uint32_t lane) const {
     const Triangle4& t = packets_[packet];
     return {{t.corner[0][0][lane], t.corner[0][1][lane], t.corner[0][2][lane]},
@@ -76,7 +78,6 @@ class WideBvh final : public RayQuery {
   const Scene& scene_;
   std::vector<WideNode> nodes_;
   std::vector<uint32_t> order_;
-  std::vector<Corners> corners_;  ///< during the collapse only
   /// Each leaf's triangles four at a time, for the SIMD filter; packet_entry_ says where each
   /// packet starts in leaf order.
   std::vector<Triangle4> packets_;
