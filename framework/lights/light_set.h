@@ -25,6 +25,7 @@
 #include <vector>
 
 #include <glm/vec2.hpp>
+#include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
 #include "geometry/ray_query.h"
@@ -100,6 +101,15 @@ class LightSet {
   /// area light whose panel it is; -1 for none.
   int light_of_primitive(uint32_t primitive) const {
     return primitive < primitive_light_.size() ? primitive_light_[primitive] : -1;
+  }
+  /// Whether the surface of `primitive` sends its emission towards `wo` (a direction leaving it):
+  /// an area light's panel only on the side the light faces, as the light's own samples do;
+  /// every other surface on both sides. Without this, a path that sees the back of a panel
+  /// (the ceiling just above it) would be lit by hemisphere sampling and dark by light sampling.
+  bool emits_towards(uint32_t primitive, const glm::vec3& wo) const {
+    const int light = light_of_primitive(primitive);
+    if (light < 0 || lights_[light].kind != SampledLightKind::parallelogram) return true;
+    return glm::dot(wo, lights_[light].normal) > 0.0f;
   }
   /// Radiance light `index` sends back along −wi from the point `on_light` (two-sided emitters
   /// and one-sided area lights alike).

@@ -9,11 +9,13 @@ namespace pt {
 
 glm::vec3 zero_bounce_radiance(const LightingContext& ctx, const Ray& ray, const SurfaceHit& hit) {
   // BEGIN SOLUTION
-  (void)ray;
-  return hit.material < ctx.scene.materials.size() ? ctx.scene.materials[hit.material].emission
-                                                   : glm::vec3(0.0f);
+  if (hit.material >= ctx.scene.materials.size()) return glm::vec3(0.0f);
+  if (!ctx.lights.emits_towards(hit.primitive, -ray.d)) return glm::vec3(0.0f);
+  return ctx.scene.materials[hit.material].emission;
   // END SOLUTION
-  // STUDENT: return the emission of the hit's material (ctx.scene.materials[hit.material]).
+  // STUDENT: return the emission of the hit's material (ctx.scene.materials[hit.material]), but
+  // only if the surface emits back towards the ray (ctx.lights.emits_towards(hit.primitive,
+  // -ray.d)): an area light's panel glows on its light's side only.
   PT_STUDENT_TODO("part 3", "zero_bounce_radiance");
   (void)ctx, (void)ray, (void)hit;
   return glm::vec3(0.0f);

@@ -43,6 +43,63 @@ TEST(Part3Direct, ZeroBounceIsTheEmissionSeen) {
   EXPECT_EQ(L, glm::vec3(2.0f, 3.0f, 4.0f));
 }
 
+// An area light's panel hangs just under a ceiling, facing down (as in the course's Cornell
+// boxes). The light shines down only, so its panel must glow on that side only: seen from
+// above, and for the ceiling over it, whichever estimator is used.
+Scene panel_under_ceiling() {
+  Scene s;
+  const uint32_t white = test::add_material(s, glm::vec3(0.5f));
+  const uint32_t glow = test::add_material(s, glm::vec3(0.0f), glm::vec3(5.0f));
+  test::add_quad(s, {-2, -2, 1}, {2, -2, 1}, {2, 2, 1}, {-2, 2, 1}, white);  // ceiling
+  test::add_quad(s, {-0.5f, -0.5f, 0.99f}, {0.5f, -0.5f, 0.99f}, {0.5f, 0.5f, 0.99f},
+                 {-0.5f, 0.5f, 0.99f}, glow);  // panel
+  Light l;
+  l.kind = LightKind::area;
+  l.radiance = glm::vec3(5.0f);
+  l.position = glm::vec3(0.0f, 0.0f, 0.99f);
+  l.direction = glm::vec3(0.0f, 0.0f, -1.0f);
+  l.edge_u = glm::vec3(1.0f, 0.0f, 0.0f);
+  l.edge_v = glm::vec3(0.0f, 1.0f, 0.0f);
+  s.lights.push_back(l);
+  return s;
+}
+
+TEST(Part3Direct, AreaLightPanelGlowsOnItsLightsSideOnly) {
+  test::Rig rig(panel_under_ceiling());
+  Ray up;
+  up.o = glm::vec3(0.1f, 0.2f, 0.0f);
+  up.d = glm::vec3(0.0f, 0.0f, 1.0f);
+  SurfaceHit hit;
+  ASSERT_TRUE(rig.query.intersect(up, &hit));
+  EXPECT_EQ(zero_bounce_radiance(rig.ctx, up, hit), glm::vec3(5.0f)) << "seen from below";
+  Ray down;
+  down.o = glm::vec3(0.1f, 0.2f, 0.995f);
+  down.d = glm::vec3(0.0f, 0.0f, -1.0f);
+  ASSERT_TRUE(rig.query.intersect(down, &hit));
+  ASSERT_NEAR(hit.t, 0.005f, 1e-5f) << "the ray should meet the panel's back";
+  EXPECT_EQ(zero_bounce_radiance(rig.ctx, down, hit), glm::vec3(0.0f)) << "seen from above";
+}
+
+TEST(Part3Direct, CeilingOverAPanelIsDarkByBothEstimators) {
+  // Most hemisphere directions from the ceiling's point meet the panel's back 1 cm below: they
+  // must bring nothing, exactly as light sampling (which sees the light from behind) says.
+  for (bool hemisphere : {true, false}) {
+    test::Rig rig(panel_under_ceiling());
+    rig.ctx.hemisphere = hemisphere;
+    rig.ctx.light_samples = 64;
+    Ray up;
+    up.o = glm::vec3(0.1f, 0.2f, 0.995f);
+    up.d = glm::vec3(0.0f, 0.0f, 1.0f);
+    SurfaceHit hit;
+    ASSERT_TRUE(rig.query.intersect(up, &hit));
+    ShadingPoint sp(rig.ctx.scene, up, hit);
+    Rng rng(5);
+    glm::vec3 sum(0.0f);
+    for (int i = 0; i < 64; ++i) sum += one_bounce_radiance(rig.ctx, sp, rng);
+    EXPECT_EQ(sum, glm::vec3(0.0f)) << (hemisphere ? "hemisphere" : "light importance");
+  }
+}
+
 // A convex diffuse sphere of albedo ρ under a uniform sky L never sees itself: L_out = ρL.
 void check_sphere_under_sky(bool hemisphere) {
   const float rho = 0.6f, L = 2.0f;
