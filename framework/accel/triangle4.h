@@ -14,6 +14,7 @@ namespace pt {
 /// no triangle (a sphere's entry, or past the leaf's end) has NaN corners, which the filter never
 /// rejects; the caller knows which lanes are real.
 struct alignas(16) Triangle4 {
+  static constexpr uint32_t kLanes = 4;
   float corner[3][3][4];
 };
 

@@ -92,44 +92,95 @@ void WideBvh::add_packets(uint32_t first, uint32_t count) {
   }
 }
 
+namespace {
+
+/// One child slot of a wide node while it is being made: a binary subtree still to collapse, or
+/// a run of leaf-order entries that becomes one wide leaf.
+struct Slot {
+  uint32_t node;   ///< the binary node (for a run merged from several subtrees: the first one's)
+  uint32_t first;  ///< leaf: first leaf-order entry
+  uint32_t count;  ///< leaf: entries; 0 for a subtree still to collapse
+  Bounds3 box;
+  float area;
+};
+
+/// How many entries the binary subtree at `index` holds, if at most `limit`; else limit + 1.
+/// Stops as soon as it knows, so asking costs at most a few nodes however large the subtree.
+uint32_t entries_up_to(const std::vector<BvhNode>& bin, uint32_t index, uint32_t limit,
+                       uint32_t* first) {
+  const BvhNode& n = bin[index];
+  if (n.is_leaf()) {
+    *first = n.offset;
+    return n.count;
+  }
+  const uint32_t left = entries_up_to(bin, index + 1, limit, first);
+  if (left > limit) return limit + 1;
+  uint32_t unused;
+  return std::min(left + entries_up_to(bin, n.offset, limit - left, &unused), limit + 1);
+}
+
+/// The slot for binary node `index`: a leaf when it is a binary leaf or its whole subtree fits
+/// one packet (the binary tree's small leaves are packed four triangles to a packet, so the SIMD
+/// filter's lanes are full), else a subtree to open or collapse.
+Slot make_slot(const std::vector<BvhNode>& bin, uint32_t index) {
+  Slot s{index, 0, 0, bin[index].bounds, bin[index].bounds.surface_area()};
+  const uint32_t n = entries_up_to(bin, index, Triangle4::kLanes, &s.first);
+  if (bin[index].is_leaf() || n <= Triangle4::kLanes) s.count = n;
+  return s;
+}
+
+}  // namespace
+
 uint32_t WideBvh::collapse(const std::vector<BvhNode>& bin, uint32_t index, uint32_t depth) {
   if (depth > uint32_t(Bvh::kMaxDepth))
     throw std::invalid_argument("WideBvh: the binary tree is deeper than Bvh::kMaxDepth (" +
                                 std::to_string(Bvh::kMaxDepth) + ")");
   stats_.depth = std::max(stats_.depth, depth + 1);
-  // A binary leaf at the root still gets a node above it, so every traversal starts the same way.
-  uint32_t kids[4];
-  float area[4];
+  // A leaf at the root still gets a node above it, so every traversal starts the same way.
+  Slot slots[4];
   int n = 0;
-  if (bin[index].is_leaf()) {
-    kids[n++] = index;
-  } else {
-    kids[n++] = index + 1;
-    kids[n++] = bin[index].offset;
-  }
-  for (int k = 0; k < n; ++k) area[k] = bin[kids[k]].bounds.surface_area();
-  // Open the largest interior child until there are four: a big box is the one most rays enter.
-  // Its two children take its place, in order, so slots stay in the binary tree's order (ties in
-  // entry distance are visited as Part 2 visits them; see find_nearest).
-  while (n < 4) {
-    int open = -1;
-    for (int k = 0; k < n; ++k)
-      if (!bin[kids[k]].is_leaf() && (open < 0 || area[k] > area[open])) open = k;
-    if (open < 0) break;
-    const uint32_t parent = kids[open];
-    for (int k = n; k > open + 1; --k) kids[k] = kids[k - 1], area[k] = area[k - 1];
-    kids[open] = parent + 1;
-    kids[open + 1] = bin[parent].offset;
-    area[open] = bin[kids[open]].bounds.surface_area();
-    area[open + 1] = bin[kids[open + 1]].bounds.surface_area();
-    ++n;
+  slots[n++] = make_slot(bin, index);
+  // Slots stay in the binary tree's order throughout, so ties in entry distance are visited as
+  // Part 2 visits them (see find_nearest), and neighbouring leaves hold neighbouring entries.
+  for (;;) {
+    // Open the largest subtree until there are four slots: a big box is the one most rays enter.
+    while (n < 4) {
+      int open = -1;
+      for (int k = 0; k < n; ++k)
+        if (slots[k].count == 0 && (open < 0 || slots[k].area > slots[open].area)) open = k;
+      if (open < 0) break;
+      const BvhNode& parent = bin[slots[open].node];
+      for (int k = n; k > open + 1; --k) slots[k] = slots[k - 1];
+      slots[open + 1] = make_slot(bin, parent.offset);
+      slots[open] = make_slot(bin, slots[open].node + 1);
+      ++n;
+    }
+    // Neighbouring leaves that fit one packet together become one leaf: a half-empty packet
+    // costs a whole filter test, and the slot freed may open a subtree instead.
+    bool merged = false;
+    for (int k = 0; k + 1 < n; ++k) {
+      Slot& a = slots[k];
+      const Slot& b = slots[k + 1];
+      if (a.count == 0 || b.count == 0 || a.count + b.count > Triangle4::kLanes) continue;
+      a.count += b.count;
+      a.box.grow(b.box);
+      a.area = a.box.surface_area();
+      for (int j = k + 1; j + 1 < n; ++j) slots[j] = slots[j + 1];
+      --n;
+      --k;  // the grown leaf may take its next neighbour too
+      merged = true;
+    }
+    if (!merged || n == 4) break;
+    bool can_open = false;
+    for (int k = 0; k < n; ++k) can_open |= slots[k].count == 0;
+    if (!can_open) break;
   }
   const uint32_t self = uint32_t(nodes_.size());
   {
     WideNode& node = nodes_.emplace_back();
     node.children = uint8_t(n);
     for (int k = 0; k < 4; ++k) {
-      const Bounds3 b = k < n ? bin[kids[k]].bounds : Bounds3{};
+      const Bounds3 b = k < n ? slots[k].box : Bounds3{};
       for (int a = 0; a < 3; ++a) {
         node.boxes.bounds[a][k] = b.lo[a];
         node.boxes.bounds[3 + a][k] = b.hi[a];
@@ -138,20 +189,18 @@ uint32_t WideBvh::collapse(const std::vector<BvhNode>& bin, uint32_t index, uint
       node.count[k] = 0;
     }
   }
-  // nodes_ never reallocates (reserved for the most nodes a collapse makes), but the children
-  // are written through the index all the same, so the code does not lean on that.
+  // Written through the index: collapsing a child appends to nodes_.
   for (int k = 0; k < n; ++k) {
-    const BvhNode& c = bin[kids[k]];
-    if (c.is_leaf()) {
+    const Slot& c = slots[k];
+    if (c.count > 0) {
       if (c.count > 255)
         throw std::invalid_argument("WideBvh: a leaf of " + std::to_string(c.count) +
                                     " primitives (at most 255)");
       nodes_[self].child[k] = uint32_t(packets_.size());
       nodes_[self].count[k] = uint8_t(c.count);
-      add_packets(c.offset, c.count);
-      stats_.depth = std::max(stats_.depth, depth + 1);
+      add_packets(c.first, c.count);
     } else {
-      const uint32_t child = collapse(bin, kids[k], depth + 1);
+      const uint32_t child = collapse(bin, c.node, depth + 1);
       nodes_[self].child[k] = child;
     }
   }
