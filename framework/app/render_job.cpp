@@ -10,6 +10,7 @@
 #include "4-global/integrator.h"
 #include "5-adaptive/adaptive_sampling.h"
 #include "accel/wide_bvh.h"
+#include "geometry/counting_ray_query.h"
 
 namespace pt {
 
@@ -55,21 +56,27 @@ std::vector<MaterialKind> rendered_material_kinds(const RenderSettings& settings
   return {MaterialKind::diffuse, MaterialKind::mirror, MaterialKind::glass};
 }
 
-// Only camera rays are counted here: the integrator's shadow and bounce rays are not (yet).
+// Every ray counts: the query is wrapped in a counter that the integrator traces through, and each
+// camera sample adds what its path traced on this thread to the tile's context.
 TracedRadianceFn make_radiance(const RenderSettings& settings, const Scene& scene,
                                const RayQuery& query) {
+  auto counting = std::make_shared<CountingRayQuery>(query);
   if (settings.shading == ShadingMode::normals) {
-    return [&query](const Ray& ray, Rng&, TraceContext& context) {
-      context.rays.add();
-      return normal_shading(query, ray);
+    return [counting](const Ray& ray, Rng&, TraceContext& context) {
+      const uint64_t before = counting->thread_count();
+      const glm::vec3 L = normal_shading(*counting, ray);
+      context.rays.add(counting->thread_count() - before);
+      return L;
     };
   }
   std::string error;
-  std::shared_ptr<Integrator> integrator = Integrator::create(settings, scene, query, &error);
+  std::shared_ptr<Integrator> integrator = Integrator::create(settings, scene, *counting, &error);
   if (!integrator) throw std::runtime_error(error);
-  return [integrator](const Ray& ray, Rng& rng, TraceContext& context) {
-    context.rays.add();
-    return integrator->radiance(ray, rng);
+  return [integrator, counting](const Ray& ray, Rng& rng, TraceContext& context) {
+    const uint64_t before = counting->thread_count();
+    const glm::vec3 L = integrator->radiance(ray, rng);
+    context.rays.add(counting->thread_count() - before);
+    return L;
   };
 }
 
