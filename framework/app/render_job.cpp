@@ -9,7 +9,9 @@
 #include "2-bvh/bvh.h"
 #include "4-global/integrator.h"
 #include "5-adaptive/adaptive_sampling.h"
+#ifdef PT_HAVE_WIDE_BVH
 #include "accel/wide_bvh.h"
+#endif
 #include "geometry/counting_ray_query.h"
 
 namespace pt {
@@ -21,8 +23,10 @@ std::unique_ptr<RayQuery> make_ray_query(const RenderSettings& settings, const S
       settings.accel == AccelKind::bvh_median ? BvhSplitMethod::median : BvhSplitMethod::sah;
   options.max_leaf_size = settings.bvh_leaf_size;
   auto binary = std::make_unique<Bvh>(scene, options);
-  if (settings.bvh_width == 2) return binary;
-  return std::make_unique<WideBvh>(scene, *binary);
+#ifdef PT_HAVE_WIDE_BVH
+  if (settings.bvh_width == 4) return std::make_unique<WideBvh>(scene, *binary);
+#endif
+  return binary;  // --bvh-width 2, or a handout, which has no wide tree
 }
 
 std::string describe_bvh(const RenderSettings& settings, const Scene& scene) {
@@ -41,12 +45,16 @@ std::string describe_bvh(const RenderSettings& settings, const Scene& scene) {
                 s.leaves, s.mean_leaf_size, s.max_leaf_size, s.depth, s.sah_cost, s.build_ms);
   std::string text = line;
   if (settings.bvh_width == 4) {
+#ifdef PT_HAVE_WIDE_BVH
     const WideBvhStats& w = WideBvh(scene, binary).stats();
     std::snprintf(line, sizeof line,
                   "bvh width 4 (traced): %u nodes (mean %.2f children), depth %u, collapsed in "
                   "%.1f ms\n",
                   w.nodes, w.mean_children, w.depth, w.build_ms);
     text += line;
+#else
+    text += "bvh width 4: not in this build (the handout); the binary tree above is traced\n";
+#endif
   }
   return text;
 }
