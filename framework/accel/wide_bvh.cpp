@@ -12,6 +12,7 @@
 
 #include "1-raygen/scene_intersect.h"
 #include "accel/sheared_triangle.h"
+#include <glm/geometric.hpp>
 
 namespace pt {
 
@@ -44,8 +45,6 @@ WideBvh::WideBvh(const Scene& scene, const Bvh& binary) : scene_(scene) {
                                 " primitives but the scene has " +
                                 std::to_string(scene.primitive_count()) +
                                 " (was it built over another scene?)");
-  is_triangle_.resize(order_.size());
-  for (size_t i = 0; i < order_.size(); ++i) is_triangle_[i] = scene.is_triangle(order_[i]);
   if (!bin.empty()) {
     // Upper bounds, so nothing is moved while the tree grows: every wide node but a lone root
     // leaf's consumes a binary interior node, and every packet holds at least one entry.
@@ -53,7 +52,7 @@ WideBvh::WideBvh(const Scene& scene, const Bvh& binary) : scene_(scene) {
     for (const BvhNode& n : bin) interior += !n.is_leaf();
     nodes_.reserve(interior + 1);
     packets_.reserve(order_.size());
-    packet_entry_.reserve(order_.size());
+    lanes_.reserve(order_.size());
     prefer_huge_pages(nodes_);
     prefer_huge_pages(packets_);
     collapse(bin, 0, 0);
@@ -69,26 +68,43 @@ WideBvh::WideBvh(const Scene& scene, const Bvh& binary) : scene_(scene) {
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
+namespace {
+
+/// Part 1's rule (intersect_primitive in scene_intersect.cpp), with its very operations: a
+/// triangle whose corners are collinear in float (a normal of length 0, or one that overflows)
+/// has no normal to shade or offset along, so a nearest-hit query never reports it.
+bool part1_shades(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2) {
+  const float len = glm::length(glm::cross(p1 - p0, p2 - p0));
+  return len > 0.0f && std::isfinite(len);
+}
+
+}  // namespace
+
 void WideBvh::add_packets(uint32_t first, uint32_t count) {
   constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
   // Lanes past the leaf's end and spheres' lanes hold NaN corners: never rejected by the
-  // filter, they are sorted out by the caller (which knows the count) and the exact tests.
-  for (uint32_t base = first; base < first + count; base += 4) {
+  // filter, they are left out by the packet's lane masks.
+  for (uint32_t base = first; base < first + count; base += Triangle4::kLanes) {
     Triangle4& packet = packets_.emplace_back();
-    for (int lane = 0; lane < 4; ++lane) {
-      const uint32_t i = base + uint32_t(lane);
-      if (i < first + count && is_triangle_[i]) {
+    PacketLanes& lanes = lanes_.emplace_back();
+    lanes.first = base;
+    for (uint32_t lane = 0; lane < Triangle4::kLanes; ++lane) {
+      const uint32_t i = base + lane;
+      const bool entry = i < first + count;
+      const bool triangle = entry && scene_.is_triangle(order_[i]);
+      lanes.entries |= uint8_t(entry) << lane;
+      glm::vec3 p[3] = {glm::vec3(kNaN), glm::vec3(kNaN), glm::vec3(kNaN)};
+      if (triangle) {
         const Triangle& t = scene_.triangles[order_[i]];
-        for (int v = 0; v < 3; ++v) {
-          const glm::vec3& p = scene_.positions[t.v[v]];
-          for (int a = 0; a < 3; ++a) packet.corner[v][a][lane] = p[a];
-        }
-      } else {
-        for (int v = 0; v < 3; ++v)
-          for (int a = 0; a < 3; ++a) packet.corner[v][a][lane] = kNaN;
+        for (int v = 0; v < 3; ++v) p[v] = scene_.positions[t.v[v]];
+        lanes.triangles |= uint8_t(1u << lane);
+        lanes.nearest |= uint8_t(part1_shades(p[0], p[1], p[2])) << lane;
+      } else if (entry) {
+        lanes.nearest |= uint8_t(1u << lane);  // a sphere: Part 1 is asked for each candidate
       }
+      for (int v = 0; v < 3; ++v)
+        for (int a = 0; a < 3; ++a) packet.corner[v][a][lane] = p[v][a];
     }
-    packet_entry_.push_back(base);
   }
 }
 
@@ -212,6 +228,7 @@ uint32_t WideBvh::collapse(const std::vector<BvhNode>& bin, uint32_t index, uint
 struct WideBvh::Nearest {
   uint32_t prim = UINT32_MAX;
   float t = 0.0f;
+  float b0 = 0.0f, b1 = 0.0f, b2 = 0.0f;
   bool found() const { return prim != UINT32_MAX; }
   bool beaten_by(float t_new, uint32_t prim_new) const {
     return !found() || t_new < t || (t_new == t && prim_new < prim);
@@ -252,35 +269,36 @@ void WideBvh::find_nearest(const Ray& ray, Nearest* best) const {
     if (e.t > cull) continue;
     for (;;) {
       if (e.count > 0) {
-        const uint32_t first = packet_entry_[e.child], end = first + e.count;
-        for (uint32_t p = e.child, base = first; base < end; ++p, base += 4) {
-          unsigned lanes = triangle4_candidates(packets_[p], sheared4, cull);
-          if (end - base < 4) lanes &= (1u << (end - base)) - 1u;
+        const uint32_t packets = (e.count + Triangle4::kLanes - 1) / Triangle4::kLanes;
+        for (uint32_t p = e.child; p < e.child + packets; ++p) {
+          const PacketLanes& info = lanes_[p];
+          unsigned lanes = triangle4_candidates(packets_[p], sheared4, cull) &
+                           (kCheckEachCandidate ? info.entries : info.nearest);
           for (; lanes; lanes &= lanes - 1) {
-          const uint32_t i = base + uint32_t(__builtin_ctz(lanes));
-          const uint32_t prim = order_[i];
-          float t, t_error = 0.0f;
-          if (is_triangle_[i]) {
+            const uint32_t lane = uint32_t(__builtin_ctz(lanes));
+            const uint32_t prim = order_[info.first + lane];
+            float t_error = 0.0f;
             TriangleHit th;
-            const Corners c = corners(p, i - base);
-            if (!intersect_sheared_triangle(sheared, cull, c.p0, c.p1, c.p2, &th, &t_error))
-              continue;
-            if (!best->beaten_by(th.t, prim)) continue;
-            t = th.t;
-            if (kCheckEachCandidate) {
+            if (info.triangles >> lane & 1u) {
+              const Corners c = corners(p, lane);
+              if (!intersect_sheared_triangle(sheared, cull, c.p0, c.p1, c.p2, &th, &t_error))
+                continue;
+              if (!best->beaten_by(th.t, prim)) continue;
+              if (kCheckEachCandidate) {
+                SurfaceHit h;
+                if (!intersect_primitive(scene_, prim, ray, &h)) continue;
+              }
+            } else {
               SurfaceHit h;
               if (!intersect_primitive(scene_, prim, ray, &h)) continue;
+              if (!best->beaten_by(h.t, prim)) continue;
+              th.t = h.t;
             }
-          } else {
-            SurfaceHit h;
-            if (!intersect_primitive(scene_, prim, ray, &h)) continue;
-            if (!best->beaten_by(h.t, prim)) continue;
-            t = h.t;
-          }
-          best->prim = prim;
-          best->t = t;
-          cull = std::min(ray.tmax,
-                          t + std::max(std::abs(t) * (kHitDistanceSlack - 1.0f), 2.0f * t_error));
+            best->prim = prim;
+            best->t = th.t;
+            best->b0 = th.b0, best->b1 = th.b1, best->b2 = th.b2;
+            cull = std::min(ray.tmax, th.t + std::max(std::abs(th.t) * (kHitDistanceSlack - 1.0f),
+                                                      2.0f * t_error));
           }
         }
         break;
@@ -324,6 +342,15 @@ bool WideBvh::intersect(const Ray& ray, SurfaceHit* hit) const {
   return careful.found() && intersect_primitive(scene_, careful.prim, ray, hit);
 }
 
+bool WideBvh::nearest(const Ray& ray, NearestHit* hit) const {
+  if (nodes_.empty()) return false;
+  Nearest best;
+  find_nearest<false>(ray, &best);
+  if (!best.found()) return false;
+  *hit = {best.prim, best.t, best.b0, best.b1, best.b2};
+  return true;
+}
+
 bool WideBvh::occluded(const Ray& ray) const {
   if (nodes_.empty()) return false;
   const ShearedRay sheared(ray);
@@ -336,17 +363,17 @@ bool WideBvh::occluded(const Ray& ray) const {
   while (top > 0) {
     const StackEntry e = stack[--top];
     if (e.count > 0) {
-      const uint32_t first = packet_entry_[e.child], end = first + e.count;
-      for (uint32_t p = e.child, base = first; base < end; ++p, base += 4) {
-        unsigned lanes = triangle4_candidates(packets_[p], sheared4, ray.tmax);
-        if (end - base < 4) lanes &= (1u << (end - base)) - 1u;
+      const uint32_t packets = (e.count + Triangle4::kLanes - 1) / Triangle4::kLanes;
+      for (uint32_t p = e.child; p < e.child + packets; ++p) {
+        const PacketLanes& info = lanes_[p];
+        unsigned lanes = triangle4_candidates(packets_[p], sheared4, ray.tmax) & info.entries;
         for (; lanes; lanes &= lanes - 1) {
-          const uint32_t i = base + uint32_t(__builtin_ctz(lanes));
-          if (is_triangle_[i]) {
+          const uint32_t lane = uint32_t(__builtin_ctz(lanes));
+          if (info.triangles >> lane & 1u) {
             TriangleHit th;
-            const Corners c = corners(p, i - base);
+            const Corners c = corners(p, lane);
             if (intersect_sheared_triangle(sheared, ray.tmax, c.p0, c.p1, c.p2, &th)) return true;
-          } else if (primitive_occludes(scene_, order_[i], ray)) {
+          } else if (primitive_occludes(scene_, order_[info.first + lane], ray)) {
             return true;
           }
         }

@@ -33,6 +33,15 @@ struct WideBvhStats {
   double build_ms = 0.0;
 };
 
+/// What a nearest-hit query knows before any shading data is made, as Embree's rtcIntersect1
+/// reports it: which primitive, how far, and where on it.
+struct NearestHit {
+  uint32_t primitive = 0;
+  float t = 0.0f;
+  /// A triangle's barycentric coordinates of the hit (b0 weighs its first corner); 0 for a sphere.
+  float b0 = 0.0f, b1 = 0.0f, b2 = 0.0f;
+};
+
 /// A 4-wide BVH over a scene's primitives (triangles and spheres), made from a binary Bvh by
 /// pulling each node's largest grandchildren up until it has four children; the binary tree's
 /// leaves are kept as they are. Answers the same queries as BruteForce with the same answers:
@@ -45,13 +54,16 @@ class WideBvh final : public RayQuery {
 
   bool intersect(const Ray& ray, SurfaceHit* hit) const override;
   bool occluded(const Ray& ray) const override;
+  /// The nearest hit's primitive, t and barycentrics, without its SurfaceHit: the very primitive
+  /// and t intersect() reports, for callers (and benchmarks) that need no more.
+  bool nearest(const Ray& ray, NearestHit* hit) const;
 
   const WideBvhStats& stats() const { return stats_; }
   const std::vector<WideNode>& nodes() const { return nodes_; }
   /// Primitive indices in leaf order (the binary tree's).
   const std::vector<uint32_t>& order() const { return order_; }
   /// The leaf-order entry of lane 0 of packet `packet` (a leaf's entries fill its packets in order).
-  uint32_t packet_entry(uint32_t packet) const { return packet_entry_[packet]; }
+  uint32_t packet_entry(uint32_t packet) const { return lanes_[packet].first; }
 
   /// Entries a traversal stack can need: each visit pops one node and pushes at most three.
   static constexpr int kStackSize = 3 * Bvh::kMaxDepth + 4;
@@ -62,6 +74,13 @@ class WideBvh final : public RayQuery {
     glm::vec3 p0, p1, p2;
   };
   struct Nearest;
+  /// What each lane of a packet holds (bit k for lane k).
+  struct PacketLanes {
+    uint32_t first = 0;     ///< leaf-order entry of lane 0
+    uint8_t entries = 0;    ///< an entry of the leaf (a triangle or a sphere)
+    uint8_t triangles = 0;  ///< a triangle
+    uint8_t nearest = 0;    ///< may answer a nearest-hit query: a sphere, or a triangle Part 1 shades
+  };
 
   uint32_t collapse(const std::vector<BvhNode>& binary, uint32_t index, uint32_t depth);
   /// Appends the packets of the leaf-order entries [first, first + count).
@@ -78,11 +97,10 @@ class WideBvh final : public RayQuery {
   const Scene& scene_;
   std::vector<WideNode> nodes_;
   std::vector<uint32_t> order_;
-  /// Each leaf's triangles four at a time, for the SIMD filter; packet_entry_ says where each
-  /// packet starts in leaf order.
+  /// Each leaf's triangles four at a time, for the SIMD filter; lanes_ says where each packet
+  /// starts in leaf order and what its lanes hold.
   std::vector<Triangle4> packets_;
-  std::vector<uint32_t> packet_entry_;
-  std::vector<uint8_t> is_triangle_;  ///< per leaf-order entry
+  std::vector<PacketLanes> lanes_;
   WideBvhStats stats_;
 };
 

@@ -11,6 +11,7 @@
 
 #include "1-raygen/pixel_loop.h"
 #include "2-bvh/tests/bvh_check.h"
+#include "1-raygen/triangle_intersect.h"
 #include "accel/wide_bvh.h"
 
 namespace pt {
@@ -19,6 +20,36 @@ namespace {
 using test::Case;
 using test::case_name;
 using test::kRays;
+
+/// nearest() reports what intersect() reports (which the caller checks against brute force): the
+/// same primitive at the same t, and for a triangle the barycentrics Part 1's test gives.
+void expect_nearest_agrees(const Scene& scene, const WideBvh& wide, const std::vector<Ray>& rays) {
+  size_t differ = 0, hits = 0;
+  std::string examples;
+  for (size_t i = 0; i < rays.size(); ++i) {
+    SurfaceHit full;
+    NearestHit quick;
+    const bool a = wide.intersect(rays[i], &full), b = wide.nearest(rays[i], &quick);
+    bool same = a == b;
+    if (a && b) {
+      ++hits;
+      same = quick.primitive == full.primitive && quick.t == full.t;
+      if (same && scene.is_triangle(full.primitive)) {
+        const Triangle& t = scene.triangles[full.primitive];
+        TriangleHit th;
+        same = intersect_triangle(rays[i], scene.positions[t.v[0]], scene.positions[t.v[1]],
+                                  scene.positions[t.v[2]], &th) &&
+               th.t == quick.t && th.b0 == quick.b0 && th.b1 == quick.b1 && th.b2 == quick.b2;
+      }
+    }
+    if (!same && ++differ <= 3)
+      examples += "ray " + std::to_string(i) + ": intersect " + (a ? "hits" : "misses") +
+                  (a ? " primitive " + std::to_string(full.primitive) : "") + ", nearest " +
+                  (b ? "hits primitive " + std::to_string(quick.primitive) : "misses") + "\n";
+  }
+  EXPECT_EQ(differ, 0u) << examples;
+  EXPECT_GT(hits, 0u) << "no hits at all: not a test";
+}
 
 /// The wide tree collapsed from a binary one built with `split` and `leaf`, checked on `rays`
 /// against brute force.
@@ -32,6 +63,7 @@ void expect_brute_force_answers(const Scene& scene, BvhSplitMethod split, int le
   EXPECT_EQ(r.anyhit_vs_nearest, 0u) << r.examples;
   EXPECT_EQ(r.part1_not_ulp_tie, 0u) << r.examples;
   EXPECT_GT(r.hits, 0u) << "no hits at all: not a test";
+  expect_nearest_agrees(scene, wide, rays);
 }
 
 void check_scene(const Scene& scene, const Case& c) {
@@ -183,6 +215,9 @@ TEST(FrameworkWideBvhDegenerate, UnshadeableWinnerFallsBackToTheNextHit) {
   ASSERT_TRUE(wide.intersect(down, &got));
   EXPECT_EQ(got.primitive, 1u);
   EXPECT_EQ(got.t, want.t);
+  NearestHit quick;
+  ASSERT_TRUE(wide.nearest(down, &quick));
+  EXPECT_EQ(quick.primitive, 1u) << "nearest() must skip what Part 1 will not shade, as intersect()";
   std::vector<Ray> extra;
   Rng rng(8);
   for (int i = 0; i < 1000; ++i) {
@@ -197,6 +232,9 @@ TEST(FrameworkWideBvhDegenerate, UnshadeableWinnerFallsBackToTheNextHit) {
     SurfaceHit a, b;
     const bool ha = wide.intersect(r, &a), hb = bf.intersect(r, &b);
     differ += ha != hb || (ha && (a.t != b.t || a.primitive != b.primitive));
+    NearestHit q;
+    const bool hq = wide.nearest(r, &q);
+    differ += hq != hb || (hq && (q.t != b.t || q.primitive != b.primitive));
   }
   EXPECT_EQ(differ, 0);
 }
