@@ -118,7 +118,55 @@ struct Slot {
   uint32_t count;  ///< leaf: entries; 0 for a subtree still to collapse
   Bounds3 box;
   float area;
+  /// The way down from the wide node's own binary node: at step d the split axis[d], and bit d of
+  /// `right` set where it went into the second child. A merged run keeps the common part.
+  static constexpr int kMaxPath = 16;
+  uint8_t depth = 0;
+  uint8_t axis[kMaxPath] = {};
+  uint32_t right = 0;
+
+  /// This slot's child `side` (0 first, 1 second) of binary node `parent`, one step further down.
+  void descend(const Slot& from, const BvhNode& parent, int side) {
+    depth = from.depth, right = from.right;
+    std::copy(from.axis, from.axis + kMaxPath, axis);
+    if (depth < kMaxPath) {  // deeper than that only the order is approximate
+      axis[depth] = parent.axis;
+      right |= uint32_t(side) << depth;
+      ++depth;
+    }
+  }
+  /// Keeps only the way down that this slot and `next`, its neighbour, share.
+  void share_path(const Slot& next) {
+    int d = 0;
+    while (d < depth && d < next.depth && (right >> d & 1u) == (next.right >> d & 1u)) ++d;
+    depth = uint8_t(d);
+    right &= (1u << d) - 1u;
+  }
 };
+
+/// Whether, for rays whose direction has the signs of `octant` (bit a: negative along axis a),
+/// slot b (after slot a in slot order) should be visited before slot a: where their ways down
+/// part, the binary tree split along some axis with a's side below b's, so a ray going down that
+/// axis meets b's side first. Where one way is part of the other, slot order stays.
+bool visit_before(const Slot& b, const Slot& a, unsigned octant) {
+  for (int d = 0; d < a.depth && d < b.depth; ++d)
+    if ((a.right >> d & 1u) != (b.right >> d & 1u)) return (octant >> a.axis[d] & 1u) != 0;
+  return false;
+}
+
+/// Per octant of ray directions (byte o of the result), the order to visit the n slots in: two
+/// bits per position, first position lowest.
+uint64_t octant_orders(const Slot* slots, int n) {
+  uint64_t orders = 0;
+  for (unsigned octant = 0; octant < 8; ++octant) {
+    int order[4] = {0, 1, 2, 3};
+    for (int i = 1; i < n; ++i)  // stable insertion sort: ties keep slot order
+      for (int j = i; j > 0 && visit_before(slots[order[j]], slots[order[j - 1]], octant); --j)
+        std::swap(order[j], order[j - 1]);
+    for (int j = 0; j < 4; ++j) orders |= uint64_t(order[j]) << (8 * octant + 2 * j);
+  }
+  return orders;
+}
 
 /// How many entries the binary subtree at `index` holds, if at most `limit`; else limit + 1.
 /// Stops as soon as it knows, so asking costs at most a few nodes however large the subtree.
@@ -156,8 +204,8 @@ uint32_t WideBvh::collapse(const std::vector<BvhNode>& bin, uint32_t index, uint
   Slot slots[4];
   int n = 0;
   slots[n++] = make_slot(bin, index);
-  // Slots stay in the binary tree's order throughout, so ties in entry distance are visited as
-  // Part 2 visits them (see find_nearest), and neighbouring leaves hold neighbouring entries.
+  // Slots stay in the binary tree's order throughout, so neighbouring leaves hold neighbouring
+  // entries, and each slot remembers its way down, from which the visiting orders are made.
   for (;;) {
     // Open the largest subtree until there are four slots: a big box is the one most rays enter.
     while (n < 4) {
@@ -166,9 +214,12 @@ uint32_t WideBvh::collapse(const std::vector<BvhNode>& bin, uint32_t index, uint
         if (slots[k].count == 0 && (open < 0 || slots[k].area > slots[open].area)) open = k;
       if (open < 0) break;
       const BvhNode& parent = bin[slots[open].node];
+      const Slot from = slots[open];
       for (int k = n; k > open + 1; --k) slots[k] = slots[k - 1];
       slots[open + 1] = make_slot(bin, parent.offset);
-      slots[open] = make_slot(bin, slots[open].node + 1);
+      slots[open + 1].descend(from, parent, 1);
+      slots[open] = make_slot(bin, from.node + 1);
+      slots[open].descend(from, parent, 0);
       ++n;
     }
     // Neighbouring leaves that fit one packet together become one leaf: a half-empty packet
@@ -181,6 +232,7 @@ uint32_t WideBvh::collapse(const std::vector<BvhNode>& bin, uint32_t index, uint
       a.count += b.count;
       a.box.grow(b.box);
       a.area = a.box.surface_area();
+      a.share_path(b);
       for (int j = k + 1; j + 1 < n; ++j) slots[j] = slots[j + 1];
       --n;
       --k;  // the grown leaf may take its next neighbour too
@@ -195,6 +247,7 @@ uint32_t WideBvh::collapse(const std::vector<BvhNode>& bin, uint32_t index, uint
   {
     WideNode& node = nodes_.emplace_back();
     node.children = uint8_t(n);
+    node.order = octant_orders(slots, n);
     for (int k = 0; k < 4; ++k) {
       const Bounds3 b = k < n ? slots[k].box : Bounds3{};
       for (int a = 0; a < 3; ++a) {
@@ -237,6 +290,11 @@ struct WideBvh::Nearest {
 
 namespace {
 
+/// Which octant a direction points into: bit a set when it is negative along axis a.
+int octant_of(const glm::vec3& d) {
+  return int(std::signbit(d.x)) | int(std::signbit(d.y)) << 1 | int(std::signbit(d.z)) << 2;
+}
+
 /// A node or leaf still to visit, with the distance at which the ray enters its box.
 struct StackEntry {
   uint32_t child;
@@ -261,6 +319,7 @@ void WideBvh::find_nearest(const Ray& ray, Nearest* best) const {
   // the same t at the same spot (a duplicate, a coplanar neighbour) has an error of that size,
   // and its box, entered no later than its exact distance, must not be culled.
   float cull = ray.tmax;
+  const int octant_shift = 8 * octant_of(ray.d);
   StackEntry stack[kStackSize];
   int top = 0;
   stack[top++] = {0, 0, ray.tmin};
@@ -307,23 +366,22 @@ void WideBvh::find_nearest(const Ray& ray, Nearest* best) const {
       alignas(16) float t_entry[4];
       unsigned mask = intersect_box4(node.boxes, box_ray, cull, t_entry);
       if (mask == 0) break;
-      // Nearest child next; the others pushed farthest first, so they pop nearest first. Equal
-      // entry distances go in slot order, as Part 2 goes into its first child on a tie: the
-      // culling slack is relative, and a hit at a tiny t (a ray leaving a surface) can be off by
-      // more than that, so of two coplanar rivals in different boxes the one visited first wins;
-      // visiting them as Part 2 does keeps the answers the same as the binary tree's.
-      StackEntry hits[4];
-      int n = 0;
-      while (mask) {
-        const int k = __builtin_ctz(mask);
-        mask &= mask - 1;
-        StackEntry h{node.child[k], node.count[k], t_entry[k]};
-        int j = n++;
-        for (; j > 0 && hits[j - 1].t <= h.t; --j) hits[j] = hits[j - 1];
-        hits[j] = h;
+      // Children in the node's order for the ray's octant (front to back across each binary
+      // split, which needs no sorting of entry distances): the first visited at once, the others
+      // pushed last first, so they pop in that order; each is still culled by its entry distance
+      // when popped. Which of two coplanar rivals in different boxes is seen first can matter (a
+      // hit at a tiny t can be off by more than the relative slack), and this order is the one a
+      // front-to-back walk of the binary tree takes; the accel tests and bench check that the
+      // answers stay brute force's and the binary tree's.
+      const unsigned order = unsigned(node.order >> octant_shift) & 0xFFu;
+      int next = -1;
+      for (int j = node.children - 1; j >= 0; --j) {
+        const int k = int(order >> (2 * j)) & 3;
+        if (!(mask >> k & 1u)) continue;
+        if (next >= 0) stack[top++] = {node.child[next], node.count[next], t_entry[next]};
+        next = k;
       }
-      for (int k = 0; k < n - 1; ++k) stack[top++] = hits[k];
-      e = hits[n - 1];
+      e = {node.child[next], node.count[next], t_entry[next]};
     }
   }
 }

@@ -22,6 +22,9 @@ struct alignas(64) WideNode {
   uint32_t child[4];    ///< interior child: its node index; leaf: its first triangle packet
   uint8_t count[4];     ///< leaf: how many primitives (1 .. 255); interior child or unused slot: 0
   uint8_t children = 0; ///< slots in use (1 .. 4)
+  /// Per octant of ray directions (byte o for sign bits o of x, y, z), the order to visit the
+  /// slots in, two bits a slot, first lowest: the binary splits' order for that direction.
+  uint64_t order = 0;
 };
 
 /// What a collapse made, for bench and `pathtracer --info`.

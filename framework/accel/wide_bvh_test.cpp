@@ -257,6 +257,13 @@ TEST(FrameworkWideBvhBuild, TreeIsWellFormed) {
       const WideNode& n = nodes[i];
       ASSERT_GE(n.children, 1);
       ASSERT_LE(n.children, 4);
+      // Every octant's visiting order names each slot in use once (a slot left out is never
+      // visited, a slot named twice is visited twice).
+      for (int octant = 0; octant < 8; ++octant) {
+        unsigned seen = 0;
+        for (int j = 0; j < n.children; ++j) seen |= 1u << (n.order >> (8 * octant + 2 * j) & 3u);
+        EXPECT_EQ(seen, (1u << n.children) - 1u) << "node " << i << ", octant " << octant;
+      }
       for (int k = 0; k < 4; ++k) {
         if (k >= n.children) {
           EXPECT_GT(n.boxes.bounds[0][k], n.boxes.bounds[3][k]) << "unused slot not empty";
