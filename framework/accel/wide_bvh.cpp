@@ -309,8 +309,8 @@ struct StackEntry {
 // corners are collinear in float); otherwise only the winner is.
 template <bool kCheckEachCandidate>
 void WideBvh::find_nearest(const Ray& ray, Nearest* best) const {
-  const ShearedRay sheared(ray);
-  const ShearedRay4 sheared4(sheared);
+  const ShearedRay4 sheared4(ray);
+  const ShearedRay& sheared = sheared4.r;
   const Box4Ray box_ray(ray);
   // What boxes and triangles are culled by: the best t stretched by Part 2's kHitDistanceSlack, so
   // a rival an ulp nearer in another leaf is still compared; primitives are judged on their t.
@@ -411,8 +411,8 @@ bool WideBvh::nearest(const Ray& ray, NearestHit* hit) const {
 
 bool WideBvh::occluded(const Ray& ray) const {
   if (nodes_.empty()) return false;
-  const ShearedRay sheared(ray);
-  const ShearedRay4 sheared4(sheared);
+  const ShearedRay4 sheared4(ray);
+  const ShearedRay& sheared = sheared4.r;
   const Box4Ray box_ray(ray);
   // Any occluder will do: no distances kept, no sorting.
   StackEntry stack[kStackSize];
