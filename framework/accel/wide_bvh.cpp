@@ -149,15 +149,16 @@ struct Slot {
 /// part, the binary tree split along some axis with a's side below b's, so a ray going down that
 /// axis meets b's side first. Where one way is part of the other, slot order stays.
 bool visit_before(const Slot& b, const Slot& a, unsigned octant) {
-  for (int d = 0; d < a.depth && d < b.depth; ++d)
-    if ((a.right >> d & 1u) != (b.right >> d & 1u)) return (octant >> a.axis[d] & 1u) != 0;
-  return false;
+  const int shared = std::min(a.depth, b.depth);
+  const uint32_t differ = (a.right ^ b.right) & ((uint64_t(1) << shared) - 1u);
+  return differ != 0 && (octant >> a.axis[__builtin_ctz(differ)] & 1u) != 0;
 }
 
 /// Per octant of ray directions (byte o of the result), the order to visit the n slots in: two
 /// bits per position, first position lowest.
 uint64_t octant_orders(const Slot* slots, int n) {
   uint64_t orders = 0;
+  if (n == 1) return 0;  // every octant: slot 0 first
   for (unsigned octant = 0; octant < 8; ++octant) {
     int order[4] = {0, 1, 2, 3};
     for (int i = 1; i < n; ++i)  // stable insertion sort: ties keep slot order
