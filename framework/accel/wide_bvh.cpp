@@ -3,16 +3,19 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <limits>
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
 #include <stdexcept>
 #include <string>
 
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
+#include <glm/geometric.hpp>
+
 #include "1-raygen/scene_intersect.h"
 #include "accel/sheared_triangle.h"
-#include <glm/geometric.hpp>
 
 namespace pt {
 
@@ -47,7 +50,8 @@ WideBvh::WideBvh(const Scene& scene, const Bvh& binary) : scene_(scene) {
                                 " (was it built over another scene?)");
   if (!bin.empty()) {
     // Upper bounds, so nothing is moved while the tree grows: every wide node but a lone root
-    // leaf's consumes a binary interior node, and every packet holds at least one entry.
+    // leaf's consumes a binary interior node, and every packet holds at least one entry. The
+    // capacity never touched costs address space, not memory.
     size_t interior = 0;
     for (const BvhNode& n : bin) interior += !n.is_leaf();
     nodes_.reserve(interior + 1);

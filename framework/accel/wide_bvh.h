@@ -46,11 +46,14 @@ struct NearestHit {
 };
 
 /// A 4-wide BVH over a scene's primitives (triangles and spheres), made from a binary Bvh by
-/// pulling each node's largest grandchildren up until it has four children; the binary tree's
-/// leaves are kept as they are. Answers the same queries as BruteForce with the same answers:
-/// the nearest hit judged on the t each primitive reports (ties go to the lower primitive index),
-/// its SurfaceHit made once, by Part 1's intersect_primitive, for the winner only; and whether
-/// anything occludes a ray. The scene must outlive it; the binary tree need not.
+/// pulling each node's largest grandchildren up until it has four children; a subtree of at most
+/// four entries, or neighbouring leaves that fit four together, become one leaf (one packet of the
+/// four-triangle filter), larger binary leaves are kept whole; children are visited in an order
+/// per octant of directions made from the binary splits. Answers the same queries as BruteForce
+/// with the same answers: the nearest hit judged on the t each primitive reports (ties go to the
+/// lower primitive index), its SurfaceHit made once, by Part 1's intersect_primitive, for the
+/// winner only (or not at all: nearest()); and whether anything occludes a ray. The scene must
+/// outlive it; the binary tree need not.
 class WideBvh final : public RayQuery {
  public:
   WideBvh(const Scene& scene, const Bvh& binary);
