@@ -1,5 +1,6 @@
 // Four boxes against one ray at once (SSE where the target has it): the wide BVH's slab test,
 // conservative in the same way as Part 2's intersect_box.
+// SOLUTION-ONLY FILE: not in the student handout, since it holds complete Part 1 and Part 2 answers.
 #pragma once
 
 #include <cmath>

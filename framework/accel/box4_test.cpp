@@ -1,5 +1,6 @@
 // The wide BVH's four-box slab test against Part 2's intersect_box, lane by lane: the same answer
 // and bit-identical entry distances, on random, flat and plane-touching boxes.
+// SOLUTION-ONLY FILE: not in the student handout, since it holds complete Part 1 and Part 2 answers.
 #include <cmath>
 #include <cstdint>
 #include <limits>

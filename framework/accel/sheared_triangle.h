@@ -1,6 +1,7 @@
 // Part 1's watertight ray-triangle test split in two: what depends on the ray alone, computed once
 // per ray, and what each triangle costs, with the very same float operations (bit-identical t and
 // barycentrics), so a traversal can test thousands of triangles without redoing the shear.
+// SOLUTION-ONLY FILE: not in the student handout, since it holds complete Part 1 and Part 2 answers.
 #pragma once
 
 #include <algorithm>

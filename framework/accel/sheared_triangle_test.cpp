@@ -1,6 +1,7 @@
 // The wide BVH's triangle test (shear once per ray) against Part 1's intersect_triangle: the same
 // answer and bit-identical t and barycentrics on millions of random and adversarial rays; and its
 // four-triangle SIMD filter never turns away a triangle that test accepts.
+// SOLUTION-ONLY FILE: not in the student handout, since it holds complete Part 1 and Part 2 answers.
 #include <cmath>
 #include <cstdint>
 #include <limits>

@@ -1,3 +1,4 @@
+// SOLUTION-ONLY FILE: not in the student handout, since it holds complete Part 1 and Part 2 answers.
 #include "accel/wide_bvh.h"
 
 #include <algorithm>

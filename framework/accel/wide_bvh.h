@@ -1,5 +1,6 @@
 // The framework's 4-wide BVH: the student's binary tree (Part 2) collapsed to four children a node,
 // traversed with a four-box SIMD slab test, answering exactly as brute force does.
+// SOLUTION-ONLY FILE: not in the student handout, since it holds complete Part 1 and Part 2 answers.
 #pragma once
 
 #include <cstdint>

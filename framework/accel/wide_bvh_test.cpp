@@ -1,6 +1,7 @@
 // The wide BVH gives brute force's answers (same t, same primitive, same occlusion) on 100,000
 // random rays per scene, on the project's scenes, the course's and degenerate inputs; its tree is
 // well formed; and images rendered through it are brute force's, pixel for pixel.
+// SOLUTION-ONLY FILE: not in the student handout, since it holds complete Part 1 and Part 2 answers.
 #include <cstdio>
 #include <utility>
 #include <string>

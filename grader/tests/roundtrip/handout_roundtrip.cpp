@@ -28,6 +28,10 @@ TEST(GraderHandoutRoundTrip, HandoutBuildsAndGradesPart1AsZero) {
   // No solution left anywhere in the handout.
   ChildResult grep = run_child({"grep", "-rl", "BEGIN SOLUTION", (handout / "parts").string()}, 60);
   EXPECT_EQ(grep.exit_code, 1) << "solution markers left in: " << grep.output;
+  // Nor the framework's wide BVH, whose files are marked solution-only (they hold a complete
+  // triangle test and traversal): the handout's renders trace the student's own tree.
+  EXPECT_FALSE(fs::exists(handout / "framework" / "accel" / "wide_bvh.cpp"));
+  EXPECT_FALSE(fs::exists(handout / "framework" / "accel" / "sheared_triangle.h"));
 
   ChildResult configure = run_child({"cmake", "-S", handout.string(), "-B", build.string(),
                                      "-DCMAKE_BUILD_TYPE=Debug"}, 300);
