@@ -12,6 +12,7 @@
 
 #include "1-raygen/pixel_loop.h"
 #include "2-bvh/tests/bvh_check.h"
+#include "2-bvh/tests/bvh_test_inputs.h"
 #include "1-raygen/triangle_intersect.h"
 #include "accel/wide_bvh.h"
 
@@ -113,11 +114,7 @@ INSTANTIATE_TEST_SUITE_P(
                     Case{"sky/CBbunny.dae", BvhSplitMethod::sah, 4, 10000}),
     case_name);
 
-void add_triangle(Scene* s, glm::vec3 a, glm::vec3 b, glm::vec3 c) {
-  const uint32_t base = uint32_t(s->positions.size());
-  for (const glm::vec3& p : {a, b, c}) s->positions.push_back(p);
-  s->triangles.push_back(Triangle{{base, base + 1, base + 2}, 0});
-}
+using test::add_triangle;
 
 /// SAH with leaves of 4 and midpoint splits with leaves of 1, on 100,000 random rays and `extra`
 /// (two trees, not four as in Part 2's tests: brute force's cost is most of this executable's).
@@ -153,42 +150,15 @@ TEST(FrameworkWideBvhDegenerate, OnePrimitive) {
 }
 
 TEST(FrameworkWideBvhDegenerate, AllCentroidsEqual) {
-  Scene s;
-  Rng rng(5);
-  for (int i = 0; i < 300; ++i) {
-    const float a = 0.1f + rng.next_float(), b = 0.1f + rng.next_float(), z = rng.next_float();
-    add_triangle(&s, {-a, -b, z}, {a, -b, -z}, {0.0f, b, z});
-  }
-  for (int i = 1; i <= 20; ++i) s.spheres.push_back(Sphere{glm::vec3(0), 0.1f * float(i), 0});
-  expect_degenerate_ok(s);
+  expect_degenerate_ok(test::centroids_all_equal());
 }
 
 TEST(FrameworkWideBvhDegenerate, FlatBoxesAndRaysInTheirPlane) {
-  Scene s;
-  for (int i = 0; i < 20; ++i)
-    for (int j = 0; j < 20; ++j) {
-      const glm::vec3 p(float(i), float(j), 0.0f);
-      add_triangle(&s, p, p + glm::vec3(1, 0, 0), p + glm::vec3(1, 1, 0));
-      add_triangle(&s, p, p + glm::vec3(1, 1, 0), p + glm::vec3(0, 1, 0));
-    }
-  std::vector<Ray> extra;
-  Rng rng(12);
-  for (int i = 0; i < 2000; ++i) {
-    Ray r;
-    r.o = glm::vec3(20.0f * rng.next_float(), 20.0f * rng.next_float(), 0.0f);
-    const float phi = 2.0f * glm::pi<float>() * rng.next_float();
-    r.d = glm::vec3(std::cos(phi), std::sin(phi), 0.0f);
-    extra.push_back(r);
-    r.o.z = 1.0f, r.d = glm::vec3(0, 0, -1);  // straight down onto the grid's lines and corners
-    r.o.x = float(int(r.o.x)), r.o.y = rng.next_float() < 0.5f ? float(int(r.o.y)) : r.o.y;
-    extra.push_back(r);
-  }
-  expect_degenerate_ok(s, extra);
+  expect_degenerate_ok(test::flat_grid(), test::rays_at_flat_grid(12));
 }
 
 TEST(FrameworkWideBvhDegenerate, DuplicatesTieToTheLowestIndex) {
-  Scene s;
-  for (int i = 0; i < 50; ++i) add_triangle(&s, {-1, -1, 0}, {1, -1, 0}, {0, 1, 0});
+  const Scene s = test::duplicate_triangles(50);
   const Bvh binary(s, BvhOptions{BvhSplitMethod::sah, 1, 16, {}});
   const WideBvh wide(s, binary);
   SurfaceHit hit;
@@ -296,25 +266,6 @@ TEST(FrameworkWideBvhBuild, TreeIsWellFormed) {
   }
 }
 
-/// The normals view at w x h, `spp` jittered samples a pixel, each pixel's random numbers from
-/// (seed, pixel): the same rays whatever answers them.
-std::vector<glm::dvec3> render_normals(const Scene& scene, const RayQuery& query, int w, int h,
-                                       int spp, uint64_t seed) {
-  std::vector<glm::dvec3> image;
-  const RadianceFn radiance = [&](const Ray& ray, Rng&) {
-    SurfaceHit hit;
-    return query.intersect(ray, &hit) ? hit.n * 0.5f + glm::vec3(0.5f) : glm::vec3(0.0f);
-  };
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      Rng rng(seed, uint64_t(y) * uint64_t(w) + uint64_t(x));
-      PixelStats stats;
-      estimate_pixel(scene.camera, PixelRef{x, y, w, h}, spp, rng, radiance, &stats);
-      image.push_back(stats.mean);
-    }
-  return image;
-}
-
 class FrameworkWideBvhRender : public testing::TestWithParam<std::string> {};
 
 TEST_P(FrameworkWideBvhRender, ImageEqualsBruteForcePixelForPixel) {
@@ -325,11 +276,11 @@ TEST_P(FrameworkWideBvhRender, ImageEqualsBruteForcePixelForPixel) {
   const BruteForce bf(scene);
   const Bvh binary(scene);
   const WideBvh wide(scene, binary);
-  const std::vector<glm::dvec3> want = render_normals(scene, bf, 48, 36, 4, 43);
+  const std::vector<glm::dvec3> want = test::render_normals(scene, bf, 48, 36, 4, 43);
   int lit = 0;
   for (const glm::dvec3& p : want) lit += p != glm::dvec3(0.0);
   EXPECT_GT(lit, 48 * 36 / 4) << "the camera should see the scene";
-  const std::vector<glm::dvec3> got = render_normals(scene, wide, 48, 36, 4, 43);
+  const std::vector<glm::dvec3> got = test::render_normals(scene, wide, 48, 36, 4, 43);
   int differ = 0;
   for (size_t i = 0; i < want.size(); ++i) differ += got[i] != want[i];
   EXPECT_EQ(differ, 0);

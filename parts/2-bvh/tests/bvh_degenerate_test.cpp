@@ -9,15 +9,12 @@
 #include <gtest/gtest.h>
 
 #include "2-bvh/tests/bvh_check.h"
+#include "2-bvh/tests/bvh_test_inputs.h"
 
 namespace pt {
 namespace {
 
-void add_triangle(Scene* s, glm::vec3 a, glm::vec3 b, glm::vec3 c) {
-  const uint32_t base = uint32_t(s->positions.size());
-  for (const glm::vec3& p : {a, b, c}) s->positions.push_back(p);
-  s->triangles.push_back(Triangle{{base, base + 1, base + 2}, 0});
-}
+using test::add_triangle;
 
 /// Checks `scene` against brute force with both split methods and two leaf sizes.
 void expect_brute_force_answers(const Scene& scene, std::vector<Ray> extra = {}) {
@@ -63,48 +60,21 @@ TEST(Part2BvhDegenerate, OnePrimitiveIsOneLeaf) {
 
 TEST(Part2BvhDegenerate, AllCentroidsEqual) {
   // Triangles and spheres whose boxes are all centred on the origin: no plane separates them.
-  Scene s;
-  Rng rng(5);
-  for (int i = 0; i < 300; ++i) {
-    const float a = 0.1f + rng.next_float(), b = 0.1f + rng.next_float(), z = rng.next_float();
-    add_triangle(&s, {-a, -b, z}, {a, -b, -z}, {0.0f, b, z});
-  }
-  for (int i = 1; i <= 20; ++i) s.spheres.push_back(Sphere{glm::vec3(0), 0.1f * float(i), 0});
-  const Bvh bvh(s, BvhOptions{BvhSplitMethod::sah, 4});
+  const Scene s = test::centroids_all_equal();
+  const Bvh bvh(s, BvhOptions{BvhSplitMethod::sah, 4, 16, {}});
   EXPECT_LE(bvh.stats().max_leaf_size, 4u);
   EXPECT_LT(bvh.stats().depth, uint32_t(Bvh::kMaxDepth));
   expect_brute_force_answers(s);
 }
 
 TEST(Part2BvhDegenerate, FlatBoxesAndRaysInTheirPlane) {
-  // A 20x20 grid of triangle pairs in the plane z = 0: every box has zero thickness. Rays that
-  // run inside the plane make the slab test divide 0 by 0.
-  Scene s;
-  for (int i = 0; i < 20; ++i)
-    for (int j = 0; j < 20; ++j) {
-      const glm::vec3 p(float(i), float(j), 0.0f);
-      add_triangle(&s, p, p + glm::vec3(1, 0, 0), p + glm::vec3(1, 1, 0));
-      add_triangle(&s, p, p + glm::vec3(1, 1, 0), p + glm::vec3(0, 1, 0));
-    }
-  std::vector<Ray> extra;
-  Rng rng(11);
-  for (int i = 0; i < 2000; ++i) {
-    Ray r;
-    r.o = glm::vec3(20.0f * rng.next_float(), 20.0f * rng.next_float(), 0.0f);
-    const float phi = 2.0f * glm::pi<float>() * rng.next_float();
-    r.d = glm::vec3(std::cos(phi), std::sin(phi), 0.0f);
-    extra.push_back(r);
-    r.o.z = 1.0f, r.d = glm::vec3(0, 0, -1);  // straight down onto the grid's lines and corners
-    r.o.x = float(int(r.o.x)), r.o.y = rng.next_float() < 0.5f ? float(int(r.o.y)) : r.o.y;
-    extra.push_back(r);
-  }
-  expect_brute_force_answers(s, extra);
+  // Every box has zero thickness; rays inside the plane make the slab test divide 0 by 0.
+  expect_brute_force_answers(test::flat_grid(), test::rays_at_flat_grid(11));
 }
 
 TEST(Part2BvhDegenerate, DuplicatesTieToTheLowestIndex) {
-  Scene s;
-  for (int i = 0; i < 50; ++i) add_triangle(&s, {-1, -1, 0}, {1, -1, 0}, {0, 1, 0});
-  const Bvh bvh(s, BvhOptions{BvhSplitMethod::sah, 1});
+  const Scene s = test::duplicate_triangles(50);
+  const Bvh bvh(s, BvhOptions{BvhSplitMethod::sah, 1, 16, {}});
   SurfaceHit hit;
   Ray ray;
   ray.o = glm::vec3(0, 0, 1);
@@ -150,7 +120,7 @@ TEST(Part2BvhBuild, TreeIsWellFormed) {
   if (!test::try_load(std::string(PT_SOURCE_DIR) + "/scenes/cornell_coil.dae", &scene, &why))
     GTEST_SKIP() << why;
   for (int leaf : {1, 4, 8}) {
-    BvhOptions sah{BvhSplitMethod::sah, leaf}, mid{BvhSplitMethod::median, leaf};
+    BvhOptions sah{BvhSplitMethod::sah, leaf, 16, {}}, mid{BvhSplitMethod::median, leaf, 16, {}};
     expect_well_formed(scene, Bvh(scene, sah), leaf);
     expect_well_formed(scene, Bvh(scene, mid), leaf);
   }
@@ -177,8 +147,8 @@ TEST(Part2BvhDegenerate, ClusteredGeometry) {
 TEST(Part2BvhBuild, BadOptionsAreRefused) {
   Scene s;
   add_triangle(&s, {0, 0, 0}, {1, 0, 0}, {0, 1, 0});
-  EXPECT_THROW(Bvh(s, BvhOptions{BvhSplitMethod::sah, 0}), std::invalid_argument);
-  EXPECT_THROW(Bvh(s, BvhOptions{BvhSplitMethod::sah, 1000}), std::invalid_argument);
+  EXPECT_THROW(Bvh(s, BvhOptions{BvhSplitMethod::sah, 0, 16, {}}), std::invalid_argument);
+  EXPECT_THROW(Bvh(s, BvhOptions{BvhSplitMethod::sah, 1000, 16, {}}), std::invalid_argument);
 }
 
 }  // namespace

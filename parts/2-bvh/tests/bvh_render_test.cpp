@@ -8,29 +8,11 @@
 
 #include "1-raygen/pixel_loop.h"
 #include "2-bvh/tests/bvh_check.h"
+#include "2-bvh/tests/bvh_test_inputs.h"
 #include "rays/ray_set.h"
 
 namespace pt {
 namespace {
-
-/// The normals view of `scene` at w x h, `spp` jittered samples a pixel, each pixel's random
-/// numbers from (seed, pixel): the same seed gives the same rays whatever answers them.
-std::vector<glm::dvec3> render_normals(const Scene& scene, const RayQuery& query, int w, int h,
-                                       int spp, uint64_t seed) {
-  std::vector<glm::dvec3> image;
-  const RadianceFn radiance = [&](const Ray& ray, Rng&) {
-    SurfaceHit hit;
-    return query.intersect(ray, &hit) ? hit.n * 0.5f + glm::vec3(0.5f) : glm::vec3(0.0f);
-  };
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      Rng rng(seed, uint64_t(y) * uint64_t(w) + uint64_t(x));
-      PixelStats stats;
-      estimate_pixel(scene.camera, PixelRef{x, y, w, h}, spp, rng, radiance, &stats);
-      image.push_back(stats.mean);
-    }
-  return image;
-}
 
 class Part2BvhRender : public testing::TestWithParam<std::string> {};
 
@@ -40,13 +22,13 @@ TEST_P(Part2BvhRender, ImageEqualsBruteForcePixelForPixel) {
   if (!test::try_load(std::string(PT_SOURCE_DIR) + "/scenes/" + GetParam(), &scene, &why))
     GTEST_SKIP() << why;
   const BruteForce bf(scene);
-  const Bvh sah(scene), median(scene, BvhOptions{BvhSplitMethod::median, 1});
-  const std::vector<glm::dvec3> want = render_normals(scene, bf, 48, 36, 4, 42);
+  const Bvh sah(scene), median(scene, BvhOptions{BvhSplitMethod::median, 1, 16, {}});
+  const std::vector<glm::dvec3> want = test::render_normals(scene, bf, 48, 36, 4, 42);
   int lit = 0;
   for (const glm::dvec3& p : want) lit += p != glm::dvec3(0.0);
   EXPECT_GT(lit, 48 * 36 / 4) << "the camera should see the scene";
   for (const Bvh* bvh : {&sah, &median}) {
-    const std::vector<glm::dvec3> got = render_normals(scene, *bvh, 48, 36, 4, 42);
+    const std::vector<glm::dvec3> got = test::render_normals(scene, *bvh, 48, 36, 4, 42);
     int differ = 0;
     for (size_t i = 0; i < want.size(); ++i) differ += got[i] != want[i];
     EXPECT_EQ(differ, 0) << (bvh == &sah ? "sah" : "median");

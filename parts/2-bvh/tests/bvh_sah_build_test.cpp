@@ -6,15 +6,12 @@
 #include <gtest/gtest.h>
 
 #include "2-bvh/tests/bvh_check.h"
+#include "2-bvh/tests/bvh_test_inputs.h"
 
 namespace pt {
 namespace {
 
-void add_triangle(Scene* s, glm::vec3 a, glm::vec3 b, glm::vec3 c) {
-  const uint32_t base = uint32_t(s->positions.size());
-  for (const glm::vec3& p : {a, b, c}) s->positions.push_back(p);
-  s->triangles.push_back(Triangle{{base, base + 1, base + 2}, 0});
-}
+using test::add_triangle;
 
 BvhOptions options(BvhSplitMethod split, int max_leaf) {
   BvhOptions o;
