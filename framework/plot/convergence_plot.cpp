@@ -9,27 +9,13 @@
 #include <map>
 #include <sstream>
 
+#include "plot/xml_text.h"
+
 
 namespace fs = std::filesystem;
 
 namespace pt {
 namespace {
-
-/// Text as SVG (XML) character data: the five characters markup gives a meaning escaped.
-std::string xml_escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 std::string trim(const std::string& s) {
   size_t a = s.find_first_not_of(" \t\r\"");

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cctype>
 
+#include "plot/xml_text.h"
+
 namespace pt::web {
 namespace {
 
@@ -109,19 +111,6 @@ std::string merge_flags(const std::string& base, const std::string& extra) {
   return out;
 }
 
-std::string html_escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
+std::string html_escape(const std::string& text) { return xml_escape(text); }
 
 }  // namespace pt::web
