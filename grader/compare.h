@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "stats/block_test.h"
+#include "stats/block_ttest.h"
 
 namespace pt::grader {
 

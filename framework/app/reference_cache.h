@@ -9,7 +9,7 @@
 
 #include "image/image.h"
 #include "render/render_settings.h"
-#include "stats/block_test.h"
+#include "stats/block_ttest.h"
 
 namespace pt {
 

@@ -5,7 +5,7 @@
 
 #include "image/image.h"
 #include "render/pixel_stats.h"
-#include "stats/block_test.h"
+#include "stats/block_ttest.h"
 
 namespace pt {
 

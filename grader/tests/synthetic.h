@@ -9,7 +9,7 @@
 
 #include "render/pixel_stats.h"
 #include "sampling/rng.h"
-#include "stats/block_test.h"
+#include "stats/block_ttest.h"
 
 namespace pt::grader::testing {
 

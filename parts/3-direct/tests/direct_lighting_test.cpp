@@ -7,7 +7,7 @@
 #include "3-direct/direct_lighting.h"
 #include "3-direct/tests/lighting_harness.h"
 #include "render/pixel_stats.h"
-#include "stats/block_test.h"
+#include "stats/block_ttest.h"
 
 namespace pt {
 namespace {

@@ -12,7 +12,7 @@
 #include "image/sample_rate.h"
 #include "render/film.h"
 #include "render/tile_renderer.h"
-#include "stats/block_test.h"
+#include "stats/block_ttest.h"
 
 namespace pt {
 namespace {

@@ -1,6 +1,6 @@
 // The block t-test on synthetic renders whose truth is known: the same truth with other random
 // numbers passes at the stated rate, a biased one fails, broken input fails.
-#include "stats/block_test.h"
+#include "stats/block_ttest.h"
 
 #include <cmath>
 #include <limits>
