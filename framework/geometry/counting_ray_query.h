@@ -38,7 +38,11 @@ class CountingRayQuery final : public RayQuery {
 
  private:
   const RayQuery& inner_;
-  mutable tbb::enumerable_thread_specific<uint64_t> counts_{0};
+  // One TLS key for this instance: local() is then a thread-local lookup, not a hash of the
+  // thread id, which matters at one call per ray.
+  mutable tbb::enumerable_thread_specific<uint64_t, tbb::cache_aligned_allocator<uint64_t>,
+                                          tbb::ets_key_per_instance>
+      counts_{0};
 };
 
 }  // namespace pt
