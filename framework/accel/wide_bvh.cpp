@@ -397,8 +397,15 @@ bool WideBvh::intersect(const Ray& ray, SurfaceHit* hit) const {
   Nearest best;
   find_nearest<false>(ray, &best);
   if (!best.found()) return false;
-  // The winner's full hit, made the way brute force makes it (the same t, by construction).
-  if (intersect_primitive(scene_, best.prim, ray, hit) && hit->t == best.t) return true;
+  // The winner's full hit, made as brute force makes it: a triangle's from the t and barycentrics
+  // its test reported (bit-identical to Part 1's, so no second test), a sphere's by Part 1.
+  if (scene_.is_triangle(best.prim)) {
+    if (triangle_surface_hit(scene_, best.prim, TriangleHit{best.t, best.b0, best.b1, best.b2},
+                             hit))
+      return true;
+  } else if (intersect_primitive(scene_, best.prim, ray, hit) && hit->t == best.t) {
+    return true;
+  }
   // Part 1 refused to shade the winner (corners collinear in float): look again, checking each
   // candidate, as Part 2 does.
   Nearest careful;

@@ -17,14 +17,14 @@ bool all_finite(const glm::vec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-bool intersect_triangle_primitive(const Scene& scene, uint32_t primitive, const Ray& ray,
-                                  SurfaceHit* hit) {
+}  // namespace
+
+bool triangle_surface_hit(const Scene& scene, uint32_t primitive, const TriangleHit& th,
+                          SurfaceHit* hit) {
   const Triangle& tri = scene.triangles[primitive];
   const glm::vec3& p0 = scene.positions[tri.v[0]];
   const glm::vec3& p1 = scene.positions[tri.v[1]];
   const glm::vec3& p2 = scene.positions[tri.v[2]];
-  TriangleHit th;
-  if (!intersect_triangle(ray, p0, p1, p2, &th)) return false;
 
   // A triangle whose corners are collinear in float has no normal to shade or offset along: it
   // is treated as the zero-area sliver it is.
@@ -55,6 +55,18 @@ bool intersect_triangle_primitive(const Scene& scene, uint32_t primitive, const 
   hit->primitive = primitive;
   hit->material = tri.material;
   return true;
+}
+
+namespace {
+
+bool intersect_triangle_primitive(const Scene& scene, uint32_t primitive, const Ray& ray,
+                                  SurfaceHit* hit) {
+  const Triangle& tri = scene.triangles[primitive];
+  TriangleHit th;
+  if (!intersect_triangle(ray, scene.positions[tri.v[0]], scene.positions[tri.v[1]],
+                          scene.positions[tri.v[2]], &th))
+    return false;
+  return triangle_surface_hit(scene, primitive, th, hit);
 }
 
 bool intersect_sphere_primitive(const Scene& scene, uint32_t primitive, const Ray& ray,

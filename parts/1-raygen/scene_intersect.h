@@ -12,6 +12,13 @@ namespace pt {
 /// tmin < t < tmax fills *hit completely: point, its error bound, normals, material.
 bool intersect_primitive(const Scene& scene, uint32_t primitive, const Ray& ray, SurfaceHit* hit);
 
+/// The SurfaceHit of triangle `primitive` where intersect_triangle already reported `th` for some
+/// ray: what intersect_primitive fills after its own triangle test, for a caller that found the
+/// hit itself with bit-identical t and barycentrics. False for a triangle whose corners are
+/// collinear in float (no normal to shade by), as intersect_primitive refuses it.
+bool triangle_surface_hit(const Scene& scene, uint32_t primitive, const TriangleHit& th,
+                          SurfaceHit* hit);
+
 /// Whether primitive `primitive` blocks `ray` somewhere in (tmin, tmax).
 bool primitive_occludes(const Scene& scene, uint32_t primitive, const Ray& ray);
 
