@@ -16,13 +16,22 @@
 
 namespace pt {
 
-std::unique_ptr<RayQuery> make_ray_query(const RenderSettings& settings, const Scene& scene) {
-  if (settings.accel == AccelKind::brute_force) return std::make_unique<BruteForce>(scene);
+namespace {
+
+/// The binary tree's options the command line asked for (--bvh, --leaf-size).
+BvhOptions bvh_options(const RenderSettings& settings) {
   BvhOptions options;
   options.split =
       settings.accel == AccelKind::bvh_median ? BvhSplitMethod::median : BvhSplitMethod::sah;
   options.max_leaf_size = settings.bvh_leaf_size;
-  auto binary = std::make_unique<Bvh>(scene, options);
+  return options;
+}
+
+}  // namespace
+
+std::unique_ptr<RayQuery> make_ray_query(const RenderSettings& settings, const Scene& scene) {
+  if (settings.accel == AccelKind::brute_force) return std::make_unique<BruteForce>(scene);
+  auto binary = std::make_unique<Bvh>(scene, bvh_options(settings));
 #ifdef PT_HAVE_WIDE_BVH
   if (settings.bvh_width == 4) return std::make_unique<WideBvh>(scene, *binary);
 #endif
@@ -31,11 +40,7 @@ std::unique_ptr<RayQuery> make_ray_query(const RenderSettings& settings, const S
 
 std::string describe_bvh(const RenderSettings& settings, const Scene& scene) {
   if (settings.accel == AccelKind::brute_force) return "accelerator: none (brute force)\n";
-  BvhOptions options;
-  options.split =
-      settings.accel == AccelKind::bvh_median ? BvhSplitMethod::median : BvhSplitMethod::sah;
-  options.max_leaf_size = settings.bvh_leaf_size;
-  const Bvh binary(scene, options);
+  const Bvh binary(scene, bvh_options(settings));
   const BvhStats& s = binary.stats();
   char line[512];
   std::snprintf(line, sizeof line,
