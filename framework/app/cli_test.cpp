@@ -102,7 +102,7 @@ TEST_F(CliTest, HelpListsTheCourseFlagsAndExitsZero) {
   EXPECT_EQ(run.exit_code, 0) << run.err;
   for (const char* flag : {"--samples", "--light-samples", "--threads", "--max-depth", "--resolution",
                            "--file", "--hemisphere", "--adaptive", "--env", "--aperture",
-                           "--focal-distance", "--cell", "--info", "--seed", "--bvh", "--leaf-size",
+                           "--focal-distance", "--cell", "--info", "--seed", "--bvh", "--bvh-width", "--leaf-size",
                            "--normals"})
     EXPECT_NE(run.out.find(flag), std::string::npos) << flag << " missing from:\n" << run.out;
 }
@@ -129,6 +129,7 @@ TEST_F(CliTest, BadInputIsNamedAndNeverACrash) {
       {"-a 16 0 -f a.png " + s, 2, "--adaptive"},
       {"-d 0 -f a.png " + s, 2, "--focal-distance"},
       {"--bvh octree -f a.png " + s, 2, "--bvh"},
+      {"--bvh-width 3 -f a.png " + s, 2, "--bvh-width"},
       {"--frobnicate -f a.png " + s, 2, "--frobnicate"},
       {"-s many -f a.png " + s, 2, "many"},
       {"-f a.png", 2, "scene"},                                // no scene at all
