@@ -164,7 +164,9 @@ ConvergenceResult run_convergence(const ConvergenceOptions& o, std::ostream& log
                                             render_reference, o.fresh_reference, log);
   const Image& reference = result.reference.image;
 
-  auto measure = [&](const std::string& name, RenderSettings s, int budget) {
+  // `estimate`, when given, receives the render's per-pixel estimate.
+  auto measure = [&](const std::string& name, RenderSettings s, int budget,
+                     RenderEstimate* estimate = nullptr) {
     s.samples_per_pixel = budget;
     Film film(s.width, s.height);
     RenderReport report = study.render(s, &film);
@@ -183,6 +185,7 @@ ConvergenceResult run_convergence(const ConvergenceOptions& o, std::ostream& log
         << format("  relMSE %.4e", m.rel_mse) << format("  RMSE %.4e", m.rmse) << "\n"
         << std::flush;
     result.rows.push_back(m);
+    if (estimate) *estimate = film.estimate();
     return m;
   };
 
@@ -190,16 +193,22 @@ ConvergenceResult run_convergence(const ConvergenceOptions& o, std::ostream& log
   // relMSE × seconds at the largest budget: the one that reaches an error soonest).
   double best_efficiency = std::numeric_limits<double>::infinity();
   RenderSettings best_settings = base;
+  RenderEstimate best_estimate;
   for (const Strategy& strategy : kStrategies) {
     ConvergenceMeasurement last;
-    for (int budget : o.budgets) last = measure(strategy.name, with_strategy(base, strategy), budget);
+    RenderEstimate last_estimate;
+    for (int budget : o.budgets)
+      last = measure(strategy.name, with_strategy(base, strategy), budget,
+                     budget == o.budgets.back() ? &last_estimate : nullptr);
     const double efficiency = last.rel_mse * last.seconds;
     if (efficiency < best_efficiency) {
       best_efficiency = efficiency;
       best_settings = with_strategy(base, strategy);
       result.adaptive_base = strategy.name;
+      best_estimate = std::move(last_estimate);
     }
   }
+  result.allocation_bound = relmse_allocation_bound(best_estimate, reference);
   // Adaptive sampling only differs from uniform once the budget exceeds one batch.
   RenderSettings adaptive = best_settings;
   adaptive.adaptive = true;
@@ -301,6 +310,11 @@ std::string convergence_report(const ConvergenceResult& r) {
           std::isfinite(a.time.seconds / t.time.seconds))
         s << "  adaptive over uniform " << r.adaptive_base << ": "
           << format("x%.3g the time", a.time.seconds / t.time.seconds) << "\n";
+  s << "  the best any per-pixel allocation can do (from uniform " << r.adaptive_base
+    << "'s variance per pixel): "
+    << format("x%.3g uniform's samples", r.allocation_bound.best_sample_fraction)
+    << format(" (%.1f%% of pixels have no variance)", 100.0 * r.allocation_bound.zero_variance_share)
+    << "\n";
   if (r.has_speedup)
     s << "\nthread speed-up at " << r.speedup.budget << " spp (light): 1 thread "
       << format("%.3f s", r.speedup.seconds_one) << ", " << r.speedup.threads << " threads "
@@ -372,7 +386,11 @@ std::vector<std::filesystem::path> write_convergence_outputs(const ConvergenceOp
         {"noise_rel_mse", r.reference.noise_rel_mse}}},
       {"rows", rows},
       {"target", {{"relMSE", r.target}, {"source", r.target_source}}},
-      {"time_to_target", times}};
+      {"time_to_target", times},
+      {"allocation_bound",
+       {{"strategy", r.adaptive_base},
+        {"best_sample_fraction", r.allocation_bound.best_sample_fraction},
+        {"zero_variance_share", r.allocation_bound.zero_variance_share}}}};
   if (r.has_speedup)
     doc["speedup"] = {{"budget", r.speedup.budget},
                       {"strategy", "light"},

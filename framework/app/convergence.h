@@ -11,6 +11,7 @@
 
 #include "reference_cache.h"
 #include "render/render_settings.h"
+#include "stats/allocation_bound.h"
 #include "stats/time_to_error.h"
 
 namespace pt {
@@ -84,6 +85,10 @@ struct ConvergenceResult {
   Reference reference;
   std::vector<ConvergenceMeasurement> rows;
   std::string adaptive_base;  ///< the strategy adaptive sampling was put on top of
+  /// What any per-pixel allocation could save over uniform sampling of adaptive_base, from the
+  /// per-pixel variances of its render at the largest budget: the ceiling adaptive sampling is
+  /// measured against.
+  AllocationBound allocation_bound;
   double target = 0.0;
   std::string target_source;  ///< how the target was chosen
   std::vector<StrategyTime> times;
