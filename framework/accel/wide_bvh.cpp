@@ -57,7 +57,6 @@ WideBvh::WideBvh(const Scene& scene, const Bvh& binary) : scene_(scene) {
     for (const BvhNode& n : bin) interior += !n.is_leaf();
     nodes_.reserve(interior + 1);
     packets_.reserve(order_.size());
-    lanes_.reserve(order_.size());
     prefer_huge_pages(nodes_);
     prefer_huge_pages(packets_);
     collapse(bin, 0, 0);
@@ -90,14 +89,15 @@ void WideBvh::add_packets(uint32_t first, uint32_t count) {
   // Lanes past the leaf's end and spheres' lanes hold NaN corners: never rejected by the
   // filter, they are left out by the packet's lane masks.
   for (uint32_t base = first; base < first + count; base += Triangle4::kLanes) {
-    Triangle4& packet = packets_.emplace_back();
-    PacketLanes& lanes = lanes_.emplace_back();
+    LeafPacket& lanes = packets_.emplace_back();
+    Triangle4& packet = lanes.tri;
     lanes.first = base;
     for (uint32_t lane = 0; lane < Triangle4::kLanes; ++lane) {
       const uint32_t i = base + lane;
       const bool entry = i < first + count;
       const bool triangle = entry && scene_.is_triangle(order_[i]);
       lanes.entries |= uint8_t(entry) << lane;
+      lanes.prim[lane] = entry ? order_[i] : 0;
       glm::vec3 p[3] = {glm::vec3(kNaN), glm::vec3(kNaN), glm::vec3(kNaN)};
       if (triangle) {
         const Triangle& t = scene_.triangles[order_[i]];
@@ -301,6 +301,14 @@ int octant_of(const glm::vec3& d) {
   return int(std::signbit(d.x)) | int(std::signbit(d.y)) << 1 | int(std::signbit(d.z)) << 2;
 }
 
+/// Asks for the cache lines of a child the ray enters as soon as its box test says so, so that
+/// the misses of all the children entered overlap (and a pushed child's lines arrive while its
+/// siblings are visited) instead of each stalling the traversal in turn when it is reached.
+inline void prefetch_lines(const void* p, int lines) {
+  const char* c = static_cast<const char*>(p);
+  for (int i = 0; i < lines; ++i) __builtin_prefetch(c + 64 * i);
+}
+
 /// A node or leaf still to visit, with the distance at which the ray enters its box.
 struct StackEntry {
   uint32_t child;
@@ -336,18 +344,27 @@ void WideBvh::find_nearest(const Ray& ray, Nearest* best) const {
       if (e.count > 0) {
         const uint32_t packets = (e.count + Triangle4::kLanes - 1) / Triangle4::kLanes;
         for (uint32_t p = e.child; p < e.child + packets; ++p) {
-          const PacketLanes& info = lanes_[p];
-          unsigned lanes = triangle4_candidates(packets_[p], sheared4, cull) &
-                           (kCheckEachCandidate ? info.entries : info.nearest);
-          for (; lanes; lanes &= lanes - 1) {
+          const LeafPacket& info = packets_[p];
+          Triangle4Hits h;
+          triangle4_intersect(info.tri, sheared4, cull,
+                              kCheckEachCandidate ? info.entries : info.nearest, &h);
+          for (unsigned lanes = h.hit | h.retest; lanes; lanes &= lanes - 1) {
             const uint32_t lane = uint32_t(__builtin_ctz(lanes));
-            const uint32_t prim = order_[info.first + lane];
+            const uint32_t prim = info.prim[lane];
             float t_error = 0.0f;
             TriangleHit th;
             if (info.triangles >> lane & 1u) {
-              const Corners c = corners(p, lane);
-              if (!intersect_sheared_triangle(sheared, cull, c.p0, c.p1, c.p2, &th, &t_error))
-                continue;
+              if (h.hit >> lane & 1u) {
+                // Tested against the cull the packet started with: a hit found in an earlier lane
+                // may have brought it nearer since.
+                if (!h.still_hits(lane, cull)) continue;
+                th = {h.t[lane], h.b0[lane], h.b1[lane], h.b2[lane]};
+                t_error = h.t_error[lane];
+              } else {
+                const Corners c = corners(p, lane);
+                if (!intersect_sheared_triangle(sheared, cull, c.p0, c.p1, c.p2, &th, &t_error))
+                  continue;
+              }
               if (!best->beaten_by(th.t, prim)) continue;
               if (kCheckEachCandidate) {
                 SurfaceHit h;
@@ -384,6 +401,10 @@ void WideBvh::find_nearest(const Ray& ray, Nearest* best) const {
       for (int j = node.children - 1; j >= 0; --j) {
         const int k = int(order >> (2 * j)) & 3;
         if (!(mask >> k & 1u)) continue;
+        if (node.count[k] > 0)
+          prefetch_lines(&packets_[node.child[k]], int(sizeof(LeafPacket) / 64));
+        else
+          prefetch_lines(&nodes_[node.child[k]], int(sizeof(WideNode) / 64));
         if (next >= 0) stack[top++] = {node.child[next], node.count[next], t_entry[next]};
         next = k;
       }
@@ -436,15 +457,17 @@ bool WideBvh::occluded(const Ray& ray) const {
     if (e.count > 0) {
       const uint32_t packets = (e.count + Triangle4::kLanes - 1) / Triangle4::kLanes;
       for (uint32_t p = e.child; p < e.child + packets; ++p) {
-        const PacketLanes& info = lanes_[p];
-        unsigned lanes = triangle4_candidates(packets_[p], sheared4, ray.tmax) & info.entries;
-        for (; lanes; lanes &= lanes - 1) {
+        const LeafPacket& info = packets_[p];
+        Triangle4Hits h;
+        triangle4_intersect(info.tri, sheared4, ray.tmax, info.entries, &h);
+        if (h.hit & info.triangles) return true;
+        for (unsigned lanes = h.retest; lanes; lanes &= lanes - 1) {
           const uint32_t lane = uint32_t(__builtin_ctz(lanes));
           if (info.triangles >> lane & 1u) {
             TriangleHit th;
             const Corners c = corners(p, lane);
             if (intersect_sheared_triangle(sheared, ray.tmax, c.p0, c.p1, c.p2, &th)) return true;
-          } else if (primitive_occludes(scene_, order_[info.first + lane], ray)) {
+          } else if (primitive_occludes(scene_, info.prim[lane], ray)) {
             return true;
           }
         }
@@ -457,6 +480,10 @@ bool WideBvh::occluded(const Ray& ray) const {
     while (mask) {
       const int k = __builtin_ctz(mask);
       mask &= mask - 1;
+      if (node.count[k] > 0)
+        prefetch_lines(&packets_[node.child[k]], int(sizeof(LeafPacket) / 64));
+      else
+        prefetch_lines(&nodes_[node.child[k]], int(sizeof(WideNode) / 64));
       stack[top++] = {node.child[k], node.count[k], 0.0f};
     }
   }

@@ -28,6 +28,22 @@ struct alignas(64) WideNode {
   uint64_t order = 0;
 };
 
+/// One packet of a wide leaf: up to four of its entries for the SIMD triangle test, with what each
+/// lane holds and which primitive it is, in three whole cache lines, so that visiting a leaf reads
+/// nothing else (the lane masks and primitive indices in arrays of their own cost a cache miss
+/// each on a million-triangle mesh).
+struct alignas(64) LeafPacket {
+  Triangle4 tri;
+  uint32_t prim[Triangle4::kLanes] = {};  ///< each lane's primitive (scene index)
+  uint32_t first = 0;                     ///< leaf-order entry of lane 0
+  /// Bit k for lane k: an entry of the leaf (a triangle or a sphere); a triangle; an entry that
+  /// may answer a nearest-hit query (a sphere, or a triangle Part 1 shades).
+  uint8_t entries = 0, triangles = 0, nearest = 0;
+};
+
+static_assert(sizeof(WideNode) == 128 && sizeof(LeafPacket) == 192,
+              "wide nodes and leaf packets are meant to fill whole cache lines");
+
 /// What a collapse made, for bench and `pathtracer --info`.
 struct WideBvhStats {
   uint32_t nodes = 0;
@@ -70,7 +86,7 @@ class WideBvh final : public RayQuery {
   /// Primitive indices in leaf order (the binary tree's).
   const std::vector<uint32_t>& order() const { return order_; }
   /// The leaf-order entry of lane 0 of packet `packet` (a leaf's entries fill its packets in order).
-  uint32_t packet_entry(uint32_t packet) const { return lanes_[packet].first; }
+  uint32_t packet_entry(uint32_t packet) const { return packets_[packet].first; }
 
   /// Entries a traversal stack can need: each visit pops one node and pushes at most three.
   static constexpr int kStackSize = 3 * Bvh::kMaxDepth + 4;
@@ -81,19 +97,12 @@ class WideBvh final : public RayQuery {
     glm::vec3 p0, p1, p2;
   };
   struct Nearest;
-  /// What each lane of a packet holds (bit k for lane k).
-  struct PacketLanes {
-    uint32_t first = 0;     ///< leaf-order entry of lane 0
-    uint8_t entries = 0;    ///< an entry of the leaf (a triangle or a sphere)
-    uint8_t triangles = 0;  ///< a triangle
-    uint8_t nearest = 0;    ///< may answer a nearest-hit query: a sphere, or a triangle Part 1 shades
-  };
 
   uint32_t collapse(const std::vector<BvhNode>& binary, uint32_t index, uint32_t depth);
   /// Appends the packets of the leaf-order entries [first, first + count).
   void add_packets(uint32_t first, uint32_t count);
   Corners corners(uint32_t packet, uint32_t lane) const {
-    const Triangle4& t = packets_[packet];
+    const Triangle4& t = packets_[packet].tri;
     return {{t.corner[0][0][lane], t.corner[0][1][lane], t.corner[0][2][lane]},
             {t.corner[1][0][lane], t.corner[1][1][lane], t.corner[1][2][lane]},
             {t.corner[2][0][lane], t.corner[2][1][lane], t.corner[2][2][lane]}};
@@ -104,10 +113,8 @@ class WideBvh final : public RayQuery {
   const Scene& scene_;
   std::vector<WideNode> nodes_;
   std::vector<uint32_t> order_;
-  /// Each leaf's triangles four at a time, for the SIMD filter; lanes_ says where each packet
-  /// starts in leaf order and what its lanes hold.
-  std::vector<Triangle4> packets_;
-  std::vector<PacketLanes> lanes_;
+  /// Each leaf's entries four at a time, for the SIMD triangle test.
+  std::vector<LeafPacket> packets_;
   WideBvhStats stats_;
 };
 
