@@ -1,6 +1,7 @@
 #include "convergence.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <ctime>
 #include <cstdio>
@@ -57,6 +58,30 @@ class StudyScene {
   RenderReport render(const RenderSettings& settings, Film* film) {
     apply_lens(settings, &scene_.camera);
     return render_scene(settings, scene_, *query_, film);
+  }
+
+  /// render(), also timing each pixel: *sample_cost gets each pixel's seconds per sample taken,
+  /// row by row. Every pixel is rendered by one thread, so each entry has one writer; two clock
+  /// reads a pixel are lost in the samples' time.
+  RenderReport render_timed(const RenderSettings& settings, Film* film,
+                            std::vector<double>* sample_cost) {
+    apply_lens(settings, &scene_.camera);
+    const int width = settings.width;
+    sample_cost->assign(size_t(width) * size_t(settings.height), 0.0);
+    const TracedRadianceFn radiance = make_radiance(settings, scene_, *query_);
+    const PixelFn pixel = make_pixel_fn(settings, scene_.camera, radiance);
+    const PixelFn timed = [&pixel, sample_cost, width](int x, int y, Rng& rng,
+                                                       TraceContext& context, PixelStats* stats) {
+      const long before = stats->count + stats->decision_samples;
+      const auto start = std::chrono::steady_clock::now();
+      pixel(x, y, rng, context, stats);
+      const double seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      const long taken = std::max(1L, stats->count + stats->decision_samples - before);
+      // A clock too coarse to see a pixel still must not make it free.
+      (*sample_cost)[size_t(y) * size_t(width) + size_t(x)] = std::max(seconds, 1e-9) / double(taken);
+    };
+    return render_tiles(settings, timed, film);
   }
 
  private:
@@ -164,12 +189,14 @@ ConvergenceResult run_convergence(const ConvergenceOptions& o, std::ostream& log
                                             render_reference, o.fresh_reference, log);
   const Image& reference = result.reference.image;
 
-  // `estimate`, when given, receives the render's per-pixel estimate.
+  // `estimate`, when given, receives the render's per-pixel estimate and `sample_cost` each
+  // pixel's seconds per sample.
   auto measure = [&](const std::string& name, RenderSettings s, int budget,
-                     RenderEstimate* estimate = nullptr) {
+                     RenderEstimate* estimate = nullptr, std::vector<double>* sample_cost = nullptr) {
     s.samples_per_pixel = budget;
     Film film(s.width, s.height);
-    RenderReport report = study.render(s, &film);
+    RenderReport report = sample_cost ? study.render_timed(s, &film, sample_cost)
+                                      : study.render(s, &film);
     const Image image = film.mean_image();
     ConvergenceMeasurement m{name,
                              budget,
@@ -194,21 +221,26 @@ ConvergenceResult run_convergence(const ConvergenceOptions& o, std::ostream& log
   double best_efficiency = std::numeric_limits<double>::infinity();
   RenderSettings best_settings = base;
   RenderEstimate best_estimate;
+  std::vector<double> best_cost;
   for (const Strategy& strategy : kStrategies) {
     ConvergenceMeasurement last;
     RenderEstimate last_estimate;
-    for (int budget : o.budgets)
+    std::vector<double> last_cost;
+    for (int budget : o.budgets) {
+      const bool largest = budget == o.budgets.back();
       last = measure(strategy.name, with_strategy(base, strategy), budget,
-                     budget == o.budgets.back() ? &last_estimate : nullptr);
+                     largest ? &last_estimate : nullptr, largest ? &last_cost : nullptr);
+    }
     const double efficiency = last.rel_mse * last.seconds;
     if (efficiency < best_efficiency) {
       best_efficiency = efficiency;
       best_settings = with_strategy(base, strategy);
       result.adaptive_base = strategy.name;
       best_estimate = std::move(last_estimate);
+      best_cost = std::move(last_cost);
     }
   }
-  result.allocation_bound = relmse_allocation_bound(best_estimate, reference);
+  result.allocation_bound = relmse_allocation_bound(best_estimate, reference, best_cost);
   // Adaptive sampling only differs from uniform once the budget exceeds one batch.
   RenderSettings adaptive = best_settings;
   adaptive.adaptive = true;
@@ -311,8 +343,9 @@ std::string convergence_report(const ConvergenceResult& r) {
         s << "  adaptive over uniform " << r.adaptive_base << ": "
           << format("x%.3g the time", a.time.seconds / t.time.seconds) << "\n";
   s << "  the best any per-pixel allocation can do (from uniform " << r.adaptive_base
-    << "'s variance per pixel): "
-    << format("x%.3g uniform's samples", r.allocation_bound.best_sample_fraction)
+    << "'s variance and time per pixel): "
+    << format("x%.3g uniform's time", r.allocation_bound.best_time_fraction)
+    << format(", x%.3g its samples", r.allocation_bound.best_sample_fraction)
     << format(" (%.1f%% of pixels have no variance)", 100.0 * r.allocation_bound.zero_variance_share)
     << "\n";
   if (r.has_speedup)
@@ -390,6 +423,9 @@ std::vector<std::filesystem::path> write_convergence_outputs(const ConvergenceOp
       {"allocation_bound",
        {{"strategy", r.adaptive_base},
         {"best_sample_fraction", r.allocation_bound.best_sample_fraction},
+        {"best_time_fraction", std::isfinite(r.allocation_bound.best_time_fraction)
+                                   ? json(r.allocation_bound.best_time_fraction)
+                                   : json(nullptr)},
         {"zero_variance_share", r.allocation_bound.zero_variance_share}}}};
   if (r.has_speedup)
     doc["speedup"] = {{"budget", r.speedup.budget},

@@ -86,8 +86,8 @@ struct ConvergenceResult {
   std::vector<ConvergenceMeasurement> rows;
   std::string adaptive_base;  ///< the strategy adaptive sampling was put on top of
   /// What any per-pixel allocation could save over uniform sampling of adaptive_base, from the
-  /// per-pixel variances of its render at the largest budget: the ceiling adaptive sampling is
-  /// measured against.
+  /// per-pixel variances and times of its render at the largest budget: the ceiling adaptive
+  /// sampling is measured against.
   AllocationBound allocation_bound;
   double target = 0.0;
   std::string target_source;  ///< how the target was chosen

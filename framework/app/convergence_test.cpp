@@ -85,6 +85,8 @@ TEST_F(BenchConvergence, TinyStudyWritesATableThePlotterReads) {
   EXPECT_GT(r.allocation_bound.best_sample_fraction, 0.3);
   EXPECT_LT(r.allocation_bound.best_sample_fraction, 1.0);
   EXPECT_LT(r.allocation_bound.zero_variance_share, 0.2);
+  EXPECT_GT(r.allocation_bound.best_time_fraction, 0.3);
+  EXPECT_LT(r.allocation_bound.best_time_fraction, 1.0);
   EXPECT_NE(convergence_report(r).find("the best any per-pixel allocation can do"),
             std::string::npos);
   EXPECT_TRUE(r.has_speedup);

@@ -39,6 +39,22 @@ TEST(ConvergenceAllocationBound, PixelsWithoutVarianceAreTheSaving) {
   EXPECT_NEAR(b.zero_variance_share, 0.75, 1e-12);
 }
 
+TEST(ConvergenceAllocationBound, CheapExactPixelsSaveLittleTime) {
+  // Three quarters of the pixels exact but six times cheaper a sample than the noisy quarter
+  // (a sky around a model): the samples saved are many, the time saved is not. Uniform spends
+  // 0.75·1 + 0.25·6 = 2.25 a pixel-sample, the best allocation the noisy quarter's 0.25·6 = 1.5.
+  std::vector<glm::vec3> var(16, glm::vec3(0.0f));
+  std::vector<double> cost(16, 1.0);
+  for (int i = 0; i < 4; ++i) var[size_t(i)] = glm::vec3(0.3f), cost[size_t(i)] = 6.0;
+  const AllocationBound b =
+      relmse_allocation_bound(estimate_with(4, 4, var), Image(4, 4, glm::vec3(1.0f)), cost);
+  EXPECT_NEAR(b.best_sample_fraction, 0.25, 1e-12);
+  EXPECT_NEAR(b.best_time_fraction, 1.5 / 2.25, 1e-12);
+  // Without costs there is no time fraction to tell.
+  EXPECT_TRUE(std::isnan(
+      relmse_allocation_bound(estimate_with(4, 4, var), Image(4, 4, glm::vec3(1.0f))).best_time_fraction));
+}
+
 TEST(ConvergenceAllocationBound, WeighsEachPixelByItsReference) {
   // Same variance, references 3 and 0: a = 1/(9 + ε) and 1/ε, worked by hand.
   Image ref(2, 1, glm::vec3(0.0f));
@@ -98,6 +114,31 @@ TEST(ConvergenceAllocationBound, NoAllocationTriedBeatsIt) {
     for (double& ni : n) ni *= total / sum;
     EXPECT_GE(expected_relmse(a, n), best_error * (1.0 - 1e-12)) << "trial " << trial;
   }
+
+  // The same with a cost per sample and a fixed time: n_i ∝ √(a_i / c_i) reaches uniform's error
+  // in the time fraction the bound gives, and no reallocation of the same time does better.
+  std::vector<double> cost(pixels);
+  double cost_sum = 0.0;
+  for (double& c : cost) cost_sum += (c = spread(rng));
+  const double ft = relmse_allocation_bound(estimate_with(w, h, var), ref, cost).best_time_fraction;
+  ASSERT_GT(ft, 0.0);
+  ASSERT_LT(ft, 1.0);
+  const double time = 64.0 * cost_sum;  // uniform's time at 64 samples a pixel
+  double weight = 0.0;
+  for (int i = 0; i < pixels; ++i) weight += std::sqrt(a[size_t(i)] * cost[size_t(i)]);
+  std::vector<double> timed(pixels);
+  for (int i = 0; i < pixels; ++i)
+    timed[size_t(i)] = time * std::sqrt(a[size_t(i)] / cost[size_t(i)]) / weight;
+  const double timed_error = expected_relmse(a, timed);
+  EXPECT_NEAR(timed_error, expected_relmse(a, std::vector<double>(pixels, 64.0 / ft)),
+              1e-9 * timed_error);
+  for (int trial = 0; trial < 2000; ++trial) {
+    std::vector<double> n(timed);
+    double spent = 0.0;
+    for (int i = 0; i < pixels; ++i) spent += (n[size_t(i)] *= wobble(rng)) * cost[size_t(i)];
+    for (double& ni : n) ni *= time / spent;
+    EXPECT_GE(expected_relmse(a, n), timed_error * (1.0 - 1e-12)) << "trial " << trial;
+  }
 }
 
 TEST(ConvergenceAllocationBound, RefusesMismatchedOrBrokenInput) {
@@ -114,6 +155,15 @@ TEST(ConvergenceAllocationBound, RefusesMismatchedOrBrokenInput) {
   }
   var[3].y = std::numeric_limits<float>::quiet_NaN();
   EXPECT_THROW(relmse_allocation_bound(estimate_with(2, 2, var), ref), std::invalid_argument);
+  var[3].y = 1.0f;
+  EXPECT_THROW(relmse_allocation_bound(estimate_with(2, 2, var), ref, {1.0, 1.0}),
+               std::invalid_argument);  // a cost for every pixel, or none
+  try {
+    relmse_allocation_bound(estimate_with(2, 2, var), ref, {1.0, 0.0, 1.0, 1.0});
+    FAIL() << "a cost of 0 was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("pixel (1, 0)"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
