@@ -190,12 +190,12 @@ uint32_t entries_up_to(const std::vector<BvhNode>& bin, uint32_t index, uint32_t
 }
 
 /// The slot for binary node `index`: a leaf when it is a binary leaf or its whole subtree fits
-/// one packet (the binary tree's small leaves are packed four triangles to a packet, so the SIMD
-/// filter's lanes are full), else a subtree to open or collapse.
+/// WideBvh::kPackedLeafEntries (the binary tree's small leaves are packed four triangles to a
+/// packet, so the SIMD test's lanes are full), else a subtree to open or collapse.
 Slot make_slot(const std::vector<BvhNode>& bin, uint32_t index) {
   Slot s{index, 0, 0, bin[index].bounds, bin[index].bounds.surface_area()};
-  const uint32_t n = entries_up_to(bin, index, Triangle4::kLanes, &s.first);
-  if (bin[index].is_leaf() || n <= Triangle4::kLanes) s.count = n;
+  const uint32_t n = entries_up_to(bin, index, WideBvh::kPackedLeafEntries, &s.first);
+  if (bin[index].is_leaf() || n <= WideBvh::kPackedLeafEntries) s.count = n;
   return s;
 }
 
@@ -228,13 +228,13 @@ uint32_t WideBvh::collapse(const std::vector<BvhNode>& bin, uint32_t index, uint
       slots[open].descend(from, parent, 0);
       ++n;
     }
-    // Neighbouring leaves that fit one packet together become one leaf: a half-empty packet
-    // costs a whole filter test, and the slot freed may open a subtree instead.
+    // Neighbouring leaves that fit one packed leaf together become one: a half-empty packet
+    // costs a whole SIMD test, and the slot freed may open a subtree instead.
     bool merged = false;
     for (int k = 0; k + 1 < n; ++k) {
       Slot& a = slots[k];
       const Slot& b = slots[k + 1];
-      if (a.count == 0 || b.count == 0 || a.count + b.count > Triangle4::kLanes) continue;
+      if (a.count == 0 || b.count == 0 || a.count + b.count > WideBvh::kPackedLeafEntries) continue;
       a.count += b.count;
       a.box.grow(b.box);
       a.area = a.box.surface_area();
@@ -309,6 +309,11 @@ inline void prefetch_lines(const void* p, int lines) {
   for (int i = 0; i < lines; ++i) __builtin_prefetch(c + 64 * i);
 }
 
+/// The cache lines of a leaf of `count` entries; a large binary leaf's first two packets only.
+inline int leaf_lines(uint32_t count) {
+  return count > Triangle4::kLanes ? int(2 * sizeof(LeafPacket) / 64) : int(sizeof(LeafPacket) / 64);
+}
+
 /// A node or leaf still to visit, with the distance at which the ray enters its box.
 struct StackEntry {
   uint32_t child;
@@ -320,8 +325,11 @@ struct StackEntry {
 
 // kCheckEachCandidate: every triangle that would become the best is first made into a SurfaceHit
 // (Part 2's way), for the rare ray whose winner Part 1 then refuses to shade (a triangle whose
-// corners are collinear in float); otherwise only the winner is.
-template <bool kCheckEachCandidate>
+// corners are collinear in float); otherwise only the winner is. kPrefetchShading: the caller will
+// make the winner's SurfaceHit, so each new best triangle's record is asked for at once (its
+// vertex indices lead to the corners and normals that shading reads: one cache miss fewer in
+// series once the traversal ends, most of the cost of a full intersect over a nearest query).
+template <bool kCheckEachCandidate, bool kPrefetchShading>
 void WideBvh::find_nearest(const Ray& ray, Nearest* best) const {
   const ShearedRay4 sheared4(ray);
   const ShearedRay& sheared = sheared4.r;
@@ -376,6 +384,13 @@ void WideBvh::find_nearest(const Ray& ray, Nearest* best) const {
               if (!best->beaten_by(h.t, prim)) continue;
               th.t = h.t;
             }
+            if (kPrefetchShading && prim < scene_.triangles.size()) {
+              const Triangle& tri = scene_.triangles[prim];
+              for (int v = 0; v < 3; ++v) {
+                __builtin_prefetch(&scene_.positions[tri.v[v]]);
+                if (!scene_.normals.empty()) __builtin_prefetch(&scene_.normals[tri.v[v]]);
+              }
+            }
             best->prim = prim;
             best->t = th.t;
             best->b0 = th.b0, best->b1 = th.b1, best->b2 = th.b2;
@@ -402,7 +417,7 @@ void WideBvh::find_nearest(const Ray& ray, Nearest* best) const {
         const int k = int(order >> (2 * j)) & 3;
         if (!(mask >> k & 1u)) continue;
         if (node.count[k] > 0)
-          prefetch_lines(&packets_[node.child[k]], int(sizeof(LeafPacket) / 64));
+          prefetch_lines(&packets_[node.child[k]], leaf_lines(node.count[k]));
         else
           prefetch_lines(&nodes_[node.child[k]], int(sizeof(WideNode) / 64));
         if (next >= 0) stack[top++] = {node.child[next], node.count[next], t_entry[next]};
@@ -416,7 +431,7 @@ void WideBvh::find_nearest(const Ray& ray, Nearest* best) const {
 bool WideBvh::intersect(const Ray& ray, SurfaceHit* hit) const {
   if (nodes_.empty()) return false;
   Nearest best;
-  find_nearest<false>(ray, &best);
+  find_nearest<false, true>(ray, &best);
   if (!best.found()) return false;
   // The winner's full hit, made as brute force makes it: a triangle's from the t and barycentrics
   // its test reported (bit-identical to Part 1's, so no second test), a sphere's by Part 1.
@@ -430,14 +445,14 @@ bool WideBvh::intersect(const Ray& ray, SurfaceHit* hit) const {
   // Part 1 refused to shade the winner (corners collinear in float): look again, checking each
   // candidate, as Part 2 does.
   Nearest careful;
-  find_nearest<true>(ray, &careful);
+  find_nearest<true, false>(ray, &careful);
   return careful.found() && intersect_primitive(scene_, careful.prim, ray, hit);
 }
 
 bool WideBvh::nearest(const Ray& ray, NearestHit* hit) const {
   if (nodes_.empty()) return false;
   Nearest best;
-  find_nearest<false>(ray, &best);
+  find_nearest<false, false>(ray, &best);
   if (!best.found()) return false;
   *hit = {best.prim, best.t, best.b0, best.b1, best.b2};
   return true;
@@ -481,7 +496,7 @@ bool WideBvh::occluded(const Ray& ray) const {
       const int k = __builtin_ctz(mask);
       mask &= mask - 1;
       if (node.count[k] > 0)
-        prefetch_lines(&packets_[node.child[k]], int(sizeof(LeafPacket) / 64));
+        prefetch_lines(&packets_[node.child[k]], leaf_lines(node.count[k]));
       else
         prefetch_lines(&nodes_[node.child[k]], int(sizeof(WideNode) / 64));
       stack[top++] = {node.child[k], node.count[k], 0.0f};

@@ -64,8 +64,8 @@ struct NearestHit {
 
 /// A 4-wide BVH over a scene's primitives (triangles and spheres), made from a binary Bvh by
 /// pulling each node's largest grandchildren up until it has four children; a subtree of at most
-/// four entries, or neighbouring leaves that fit four together, become one leaf (one packet of the
-/// four-triangle filter), larger binary leaves are kept whole; children are visited in an order
+/// kPackedLeafEntries entries, or neighbouring leaves that fit that together, become one leaf
+/// (packets of the four-triangle SIMD test), larger binary leaves are kept whole; children are visited in an order
 /// per octant of directions made from the binary splits. Answers the same queries as BruteForce
 /// with the same answers: the nearest hit judged on the t each primitive reports (ties go to the
 /// lower primitive index), its SurfaceHit made once, by Part 1's intersect_primitive, for the
@@ -88,6 +88,11 @@ class WideBvh final : public RayQuery {
   /// The leaf-order entry of lane 0 of packet `packet` (a leaf's entries fill its packets in order).
   uint32_t packet_entry(uint32_t packet) const { return packets_[packet].first; }
 
+  /// A subtree of at most this many entries becomes one leaf (two packets), and neighbouring
+  /// leaves are merged up to it: the traversal waits on memory, and a node visit is a cache miss
+  /// in series where a leaf's second packet arrives with its first.
+  static constexpr uint32_t kPackedLeafEntries = 2 * Triangle4::kLanes;
+
   /// Entries a traversal stack can need: each visit pops one node and pushes at most three.
   static constexpr int kStackSize = 3 * Bvh::kMaxDepth + 4;
 
@@ -107,7 +112,7 @@ class WideBvh final : public RayQuery {
             {t.corner[1][0][lane], t.corner[1][1][lane], t.corner[1][2][lane]},
             {t.corner[2][0][lane], t.corner[2][1][lane], t.corner[2][2][lane]}};
   }
-  template <bool kCheckEachCandidate>
+  template <bool kCheckEachCandidate, bool kPrefetchShading>
   void find_nearest(const Ray& ray, Nearest* best) const;
 
   const Scene& scene_;

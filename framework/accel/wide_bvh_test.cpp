@@ -241,8 +241,8 @@ TEST(FrameworkWideBvhBuild, TreeIsWellFormed) {
           continue;
         }
         if (n.count[k] > 0) {
-          // Binary leaves are kept whole, and neighbours are packed up to a packet's lanes.
-          EXPECT_LE(n.count[k], std::max<uint32_t>(leaf, Triangle4::kLanes));
+          // Binary leaves are kept whole, and neighbours are packed up to kPackedLeafEntries.
+          EXPECT_LE(n.count[k], std::max<uint32_t>(leaf, WideBvh::kPackedLeafEntries));
           const uint32_t first = wide.packet_entry(n.child[k]);
           for (uint32_t e = first; e < first + n.count[k]; ++e) {
             ++entry_seen[e];
