@@ -56,6 +56,7 @@ WideBvh::WideBvh(const Scene& scene, const Bvh& binary) : scene_(scene) {
     size_t interior = 0;
     for (const BvhNode& n : bin) interior += !n.is_leaf();
     nodes_.reserve(interior + 1);
+    children_.reserve(interior + 1);
     packets_.reserve(order_.size());
     prefer_huge_pages(nodes_);
     prefer_huge_pages(packets_);
@@ -63,9 +64,9 @@ WideBvh::WideBvh(const Scene& scene, const Bvh& binary) : scene_(scene) {
   }
   stats_.nodes = uint32_t(nodes_.size());
   size_t slots = 0;
-  for (const WideNode& n : nodes_) {
-    slots += n.children;
-    for (int k = 0; k < n.children; ++k) stats_.leaves += n.count[k] > 0;
+  for (size_t i = 0; i < nodes_.size(); ++i) {
+    slots += children_[i];
+    for (int k = 0; k < children_[i]; ++k) stats_.leaves += nodes_[i].count[k] > 0;
   }
   stats_.mean_children = nodes_.empty() ? 0.0 : double(slots) / double(nodes_.size());
   stats_.build_ms =
@@ -159,19 +160,19 @@ bool visit_before(const Slot& b, const Slot& a, unsigned octant) {
   return differ != 0 && (octant >> a.axis[__builtin_ctz(differ)] & 1u) != 0;
 }
 
-/// Per octant of ray directions (byte o of the result), the order to visit the n slots in: two
-/// bits per position, first position lowest.
-uint64_t octant_orders(const Slot* slots, int n) {
-  uint64_t orders = 0;
-  if (n == 1) return 0;  // every octant: slot 0 first
+/// Per octant of ray directions, the order to visit the n slots in (see WideNode::order): the n
+/// slots in use first, then the unused ones.
+void octant_orders(const Slot* slots, int n, uint8_t orders[8][3]) {
   for (unsigned octant = 0; octant < 8; ++octant) {
-    int order[4] = {0, 1, 2, 3};
+    int order[WideNode::kWidth];
+    for (int j = 0; j < WideNode::kWidth; ++j) order[j] = j;
     for (int i = 1; i < n; ++i)  // stable insertion sort: ties keep slot order
       for (int j = i; j > 0 && visit_before(slots[order[j]], slots[order[j - 1]], octant); --j)
         std::swap(order[j], order[j - 1]);
-    for (int j = 0; j < 4; ++j) orders |= uint64_t(order[j]) << (8 * octant + 2 * j);
+    uint32_t bits = 0;
+    for (int j = 0; j < WideNode::kWidth; ++j) bits |= uint32_t(order[j]) << (3 * j);
+    for (int b = 0; b < 3; ++b) orders[octant][b] = uint8_t(bits >> (8 * b));
   }
-  return orders;
 }
 
 /// How many entries the binary subtree at `index` holds, if at most `limit`; else limit + 1.
@@ -207,14 +208,15 @@ uint32_t WideBvh::collapse(const std::vector<BvhNode>& bin, uint32_t index, uint
                                 std::to_string(Bvh::kMaxDepth) + ")");
   stats_.depth = std::max(stats_.depth, depth + 1);
   // A leaf at the root still gets a node above it, so every traversal starts the same way.
-  Slot slots[4];
+  constexpr int kWidth = WideNode::kWidth;
+  Slot slots[kWidth];
   int n = 0;
   slots[n++] = make_slot(bin, index);
   // Slots stay in the binary tree's order throughout, so neighbouring leaves hold neighbouring
   // entries, and each slot remembers its way down, from which the visiting orders are made.
   for (;;) {
-    // Open the largest subtree until there are four slots: a big box is the one most rays enter.
-    while (n < 4) {
+    // Open the largest subtree until every slot is used: a big box is the one most rays enter.
+    while (n < kWidth) {
       int open = -1;
       for (int k = 0; k < n; ++k)
         if (slots[k].count == 0 && (open < 0 || slots[k].area > slots[open].area)) open = k;
@@ -244,7 +246,7 @@ uint32_t WideBvh::collapse(const std::vector<BvhNode>& bin, uint32_t index, uint
       --k;  // the grown leaf may take its next neighbour too
       merged = true;
     }
-    if (!merged || n == 4) break;
+    if (!merged || n == kWidth) break;
     bool can_open = false;
     for (int k = 0; k < n; ++k) can_open |= slots[k].count == 0;
     if (!can_open) break;
@@ -252,13 +254,13 @@ uint32_t WideBvh::collapse(const std::vector<BvhNode>& bin, uint32_t index, uint
   const uint32_t self = uint32_t(nodes_.size());
   {
     WideNode& node = nodes_.emplace_back();
-    node.children = uint8_t(n);
-    node.order = octant_orders(slots, n);
-    for (int k = 0; k < 4; ++k) {
+    children_.push_back(uint8_t(n));
+    octant_orders(slots, n, node.order);
+    for (int k = 0; k < kWidth; ++k) {
       const Bounds3 b = k < n ? slots[k].box : Bounds3{};
       for (int a = 0; a < 3; ++a) {
-        node.boxes.bounds[a][k] = b.lo[a];
-        node.boxes.bounds[3 + a][k] = b.hi[a];
+        node.boxes[k / 4].bounds[a][k % 4] = b.lo[a];
+        node.boxes[k / 4].bounds[3 + a][k % 4] = b.hi[a];
       }
       node.child[k] = 0;
       node.count[k] = 0;
@@ -309,6 +311,15 @@ inline void prefetch_lines(const void* p, int lines) {
   for (int i = 0; i < lines; ++i) __builtin_prefetch(c + 64 * i);
 }
 
+/// Which of a node's children the ray enters (bit k for slot k), and where (t_entry[k]).
+inline unsigned intersect_node(const WideNode& node, const Box4Ray& ray, float tmax,
+                               float t_entry[WideNode::kWidth]) {
+  unsigned mask = 0;
+  for (int b = 0; b < WideNode::kWidth / 4; ++b)
+    mask |= intersect_box4(node.boxes[b], ray, tmax, t_entry + 4 * b) << (4 * b);
+  return mask;
+}
+
 /// The cache lines of a leaf of `count` entries; a large binary leaf's first two packets only.
 inline int leaf_lines(uint32_t count) {
   return count > Triangle4::kLanes ? int(2 * sizeof(LeafPacket) / 64) : int(sizeof(LeafPacket) / 64);
@@ -341,7 +352,7 @@ void WideBvh::find_nearest(const Ray& ray, Nearest* best) const {
   // the same t at the same spot (a duplicate, a coplanar neighbour) has an error of that size,
   // and its box, entered no later than its exact distance, must not be culled.
   float cull = ray.tmax;
-  const int octant_shift = 8 * octant_of(ray.d);
+  const int octant = octant_of(ray.d);
   StackEntry stack[kStackSize];
   int top = 0;
   stack[top++] = {0, 0, ray.tmin};
@@ -401,8 +412,8 @@ void WideBvh::find_nearest(const Ray& ray, Nearest* best) const {
         break;
       }
       const WideNode& node = nodes_[e.child];
-      alignas(16) float t_entry[4];
-      unsigned mask = intersect_box4(node.boxes, box_ray, cull, t_entry);
+      alignas(16) float t_entry[WideNode::kWidth];
+      const unsigned mask = intersect_node(node, box_ray, cull, t_entry);
       if (mask == 0) break;
       // Children in the node's order for the ray's octant (front to back across each binary
       // split, which needs no sorting of entry distances): the first visited at once, the others
@@ -411,10 +422,10 @@ void WideBvh::find_nearest(const Ray& ray, Nearest* best) const {
       // hit at a tiny t can be off by more than the relative slack), and this order is the one a
       // front-to-back walk of the binary tree takes; the accel tests and bench check that the
       // answers stay brute force's and the binary tree's.
-      const unsigned order = unsigned(node.order >> octant_shift) & 0xFFu;
+      const unsigned order = node.order_for(octant);
       int next = -1;
-      for (int j = node.children - 1; j >= 0; --j) {
-        const int k = int(order >> (2 * j)) & 3;
+      for (int j = WideNode::kWidth - 1; j >= 0; --j) {
+        const int k = int(order >> (3 * j)) & 7;
         if (!(mask >> k & 1u)) continue;
         if (node.count[k] > 0)
           prefetch_lines(&packets_[node.child[k]], leaf_lines(node.count[k]));
@@ -490,8 +501,8 @@ bool WideBvh::occluded(const Ray& ray) const {
       continue;
     }
     const WideNode& node = nodes_[e.child];
-    alignas(16) float t_entry[4];
-    unsigned mask = intersect_box4(node.boxes, box_ray, ray.tmax, t_entry);
+    alignas(16) float t_entry[WideNode::kWidth];
+    unsigned mask = intersect_node(node, box_ray, ray.tmax, t_entry);
     while (mask) {
       const int k = __builtin_ctz(mask);
       mask &= mask - 1;

@@ -1,5 +1,5 @@
-// The framework's 4-wide BVH: the student's binary tree (Part 2) collapsed to four children a node,
-// traversed with a four-box SIMD slab test, answering exactly as brute force does.
+// The framework's wide BVH: the student's binary tree (Part 2) collapsed to eight children a node,
+// traversed with four-box SIMD slab tests, answering exactly as brute force does.
 // SOLUTION-ONLY FILE: not in the student handout, since it holds complete Part 1 and Part 2 answers.
 #pragma once
 
@@ -16,16 +16,26 @@
 
 namespace pt {
 
-/// One node of the wide tree: its four children's boxes side by side, so that one SIMD slab test
-/// answers for all four. 128 bytes, two cache lines.
+/// One node of the wide tree: its children's boxes side by side, four to a Box4, so that two
+/// four-box SIMD slab tests answer for all eight. 256 bytes, four cache lines fetched together: the
+/// traversal waits on memory, and eight children a node make fewer nodes in series on a ray's way
+/// down than four.
 struct alignas(64) WideNode {
-  Box4 boxes;           ///< an unused slot holds an empty box, which no ray meets
-  uint32_t child[4];    ///< interior child: its node index; leaf: its first triangle packet
-  uint8_t count[4];     ///< leaf: how many primitives (1 .. 255); interior child or unused slot: 0
-  uint8_t children = 0; ///< slots in use (1 .. 4)
-  /// Per octant of ray directions (byte o for sign bits o of x, y, z), the order to visit the
-  /// slots in, two bits a slot, first lowest: the binary splits' order for that direction.
-  uint64_t order = 0;
+  static constexpr int kWidth = 8;
+  Box4 boxes[kWidth / 4];   ///< slot k in boxes[k / 4], lane k % 4; an unused slot holds an empty box
+  uint32_t child[kWidth];   ///< interior child: its node index; leaf: its first packet
+  uint8_t count[kWidth];    ///< leaf: how many primitives (1 .. 255); interior child or unused: 0
+  /// Per octant of ray directions (o for sign bits o of x, y, z), the order to visit the slots in:
+  /// three bits a position, first lowest, in three bytes; the binary splits' order for that
+  /// direction. Every slot is named, those in use first, so a walk may go through all eight
+  /// positions (an unused slot's empty box is never entered).
+  uint8_t order[8][3] = {};
+
+  /// The visiting order for octant `octant`, three bits a position.
+  unsigned order_for(int octant) const {
+    return unsigned(order[octant][0]) | unsigned(order[octant][1]) << 8 |
+           unsigned(order[octant][2]) << 16;
+  }
 };
 
 /// One packet of a wide leaf: up to four of its entries for the SIMD triangle test, with what each
@@ -41,7 +51,7 @@ struct alignas(64) LeafPacket {
   uint8_t entries = 0, triangles = 0, nearest = 0;
 };
 
-static_assert(sizeof(WideNode) == 128 && sizeof(LeafPacket) == 192,
+static_assert(sizeof(WideNode) == 256 && sizeof(LeafPacket) == 192,
               "wide nodes and leaf packets are meant to fill whole cache lines");
 
 /// What a collapse made, for bench and `pathtracer --info`.
@@ -62,8 +72,8 @@ struct NearestHit {
   float b0 = 0.0f, b1 = 0.0f, b2 = 0.0f;
 };
 
-/// A 4-wide BVH over a scene's primitives (triangles and spheres), made from a binary Bvh by
-/// pulling each node's largest grandchildren up until it has four children; a subtree of at most
+/// A wide BVH over a scene's primitives (triangles and spheres), made from a binary Bvh by
+/// pulling each node's largest grandchildren up until it has WideNode::kWidth children; a subtree of at most
 /// kPackedLeafEntries entries, or neighbouring leaves that fit that together, become one leaf
 /// (packets of the four-triangle SIMD test), larger binary leaves are kept whole; children are visited in an order
 /// per octant of directions made from the binary splits. Answers the same queries as BruteForce
@@ -83,6 +93,8 @@ class WideBvh final : public RayQuery {
 
   const WideBvhStats& stats() const { return stats_; }
   const std::vector<WideNode>& nodes() const { return nodes_; }
+  /// How many slots of node `node` are in use (1 .. WideNode::kWidth).
+  uint32_t children(uint32_t node) const { return children_[node]; }
   /// Primitive indices in leaf order (the binary tree's).
   const std::vector<uint32_t>& order() const { return order_; }
   /// The leaf-order entry of lane 0 of packet `packet` (a leaf's entries fill its packets in order).
@@ -93,8 +105,9 @@ class WideBvh final : public RayQuery {
   /// in series where a leaf's second packet arrives with its first.
   static constexpr uint32_t kPackedLeafEntries = 2 * Triangle4::kLanes;
 
-  /// Entries a traversal stack can need: each visit pops one node and pushes at most three.
-  static constexpr int kStackSize = 3 * Bvh::kMaxDepth + 4;
+  /// Entries a traversal stack can need: each visit pops one node and pushes at most all but
+  /// one of its children.
+  static constexpr int kStackSize = (WideNode::kWidth - 1) * Bvh::kMaxDepth + WideNode::kWidth;
 
  private:
   /// The corners of a triangle in leaf order (unused for a sphere's entry).
@@ -117,6 +130,7 @@ class WideBvh final : public RayQuery {
 
   const Scene& scene_;
   std::vector<WideNode> nodes_;
+  std::vector<uint8_t> children_;  ///< per node, its slots in use (not needed by a traversal)
   std::vector<uint32_t> order_;
   /// Each leaf's entries four at a time, for the SIMD triangle test.
   std::vector<LeafPacket> packets_;

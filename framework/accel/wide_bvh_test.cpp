@@ -226,18 +226,26 @@ TEST(FrameworkWideBvhBuild, TreeIsWellFormed) {
     node_seen[0] = 1;
     for (size_t i = 0; i < nodes.size(); ++i) {
       const WideNode& n = nodes[i];
-      ASSERT_GE(n.children, 1);
-      ASSERT_LE(n.children, 4);
-      // Every octant's visiting order names each slot in use once (a slot left out is never
-      // visited, a slot named twice is visited twice).
+      const uint32_t used = wide.children(uint32_t(i));
+      ASSERT_GE(used, 1u);
+      ASSERT_LE(used, uint32_t(WideNode::kWidth));
+      // Every octant's visiting order names each slot in use once, first (a slot left out is
+      // never visited, a slot named twice is visited twice), then the unused ones.
       for (int octant = 0; octant < 8; ++octant) {
-        unsigned seen = 0;
-        for (int j = 0; j < n.children; ++j) seen |= 1u << (n.order >> (8 * octant + 2 * j) & 3u);
-        EXPECT_EQ(seen, (1u << n.children) - 1u) << "node " << i << ", octant " << octant;
+        unsigned seen = 0, all = 0;
+        for (int j = 0; j < WideNode::kWidth; ++j) {
+          const unsigned bit = 1u << (n.order_for(octant) >> (3 * j) & 7u);
+          if (j < int(used)) seen |= bit;
+          all |= bit;
+        }
+        EXPECT_EQ(seen, (1u << used) - 1u) << "node " << i << ", octant " << octant;
+        EXPECT_EQ(all, (1u << WideNode::kWidth) - 1u) << "node " << i << ", octant " << octant;
       }
-      for (int k = 0; k < 4; ++k) {
-        if (k >= n.children) {
-          EXPECT_GT(n.boxes.bounds[0][k], n.boxes.bounds[3][k]) << "unused slot not empty";
+      for (int k = 0; k < WideNode::kWidth; ++k) {
+        const Box4& box = n.boxes[k / 4];
+        const int lane = k % 4;
+        if (k >= int(used)) {
+          EXPECT_GT(box.bounds[0][lane], box.bounds[3][lane]) << "unused slot not empty";
           continue;
         }
         if (n.count[k] > 0) {
@@ -248,8 +256,8 @@ TEST(FrameworkWideBvhBuild, TreeIsWellFormed) {
             ++entry_seen[e];
             const Bounds3 pb = scene.primitive_bounds(wide.order()[e]);
             for (int a = 0; a < 3; ++a) {
-              EXPECT_LE(n.boxes.bounds[a][k], pb.lo[a]);
-              EXPECT_GE(n.boxes.bounds[3 + a][k], pb.hi[a]);
+              EXPECT_LE(box.bounds[a][lane], pb.lo[a]);
+              EXPECT_GE(box.bounds[3 + a][lane], pb.hi[a]);
             }
           }
         } else {
