@@ -36,6 +36,9 @@ struct Bvh::NearestState {
   bool in_full = false;
   bool hit_made = false;  ///< `hit` is the best's SurfaceHit already (spheres; the second pass)
   SurfaceHit hit;
+  /// A best triangle's t and barycentrics as its test reported them, from which intersect() makes
+  /// its SurfaceHit without testing it a second time.
+  TriangleHit best_triangle;
 
   bool found() const { return best != UINT32_MAX; }
   bool beats_best(float t, uint32_t prim) const {
@@ -57,8 +60,10 @@ void Bvh::intersect_leaf(const BvhNode& leaf, NearestState* st) const {
       // brute force's intersect_primitive reports.
       TriangleHit th;
       const TriangleCorners& c = corners_[i];
-      if (intersect_triangle(st->cull, c.p0, c.p1, c.p2, &th) && st->beats_best(th.t, prim))
+      if (intersect_triangle(st->cull, c.p0, c.p1, c.p2, &th) && st->beats_best(th.t, prim)) {
         st->take(th.t, prim, false);
+        st->best_triangle = th;
+      }
       continue;
     }
     SurfaceHit h;
@@ -91,7 +96,10 @@ bool Bvh::intersect(const Ray& ray, SurfaceHit* hit) const {
     *hit = st.hit;
     return true;
   }
-  if (intersect_primitive(scene_, st.best, ray, hit)) return true;
+  // The winner is a triangle (spheres are made as they are found): its t and barycentrics are
+  // the ones brute force's intersect_primitive gets (the same corners; a nearer tmax changes
+  // which hits count, not their values), so its SurfaceHit is made from them directly.
+  if (triangle_surface_hit(scene_, st.best, st.best_triangle, hit)) return true;
   // Part 1 refuses to shade the winner (a triangle too thin in float to have a normal), so brute
   // force never saw it: walk again making each candidate in full, as brute force does.
   NearestState careful(ray);
