@@ -102,7 +102,7 @@ void WideBvh::add_packets(uint32_t first, uint32_t count) {
       glm::vec3 p[3] = {glm::vec3(kNaN), glm::vec3(kNaN), glm::vec3(kNaN)};
       if (triangle) {
         const Triangle& t = scene_.triangles[order_[i]];
-        for (int v = 0; v < 3; ++v) p[v] = scene_.positions[t.v[v]];
+        for (int v = 0; v < 3; ++v) p[v] = scene_.positions[t.v[v]], lanes.vertex[v][lane] = t.v[v];
         lanes.triangles |= uint8_t(1u << lane);
         lanes.nearest |= uint8_t(part1_shades(p[0], p[1], p[2])) << lane;
       } else if (entry) {
@@ -337,9 +337,9 @@ struct StackEntry {
 // kCheckEachCandidate: every triangle that would become the best is first made into a SurfaceHit
 // (Part 2's way), for the rare ray whose winner Part 1 then refuses to shade (a triangle whose
 // corners are collinear in float); otherwise only the winner is. kPrefetchShading: the caller will
-// make the winner's SurfaceHit, so each new best triangle's record is asked for at once (its
-// vertex indices lead to the corners and normals that shading reads: one cache miss fewer in
-// series once the traversal ends, most of the cost of a full intersect over a nearest query).
+// make the winner's SurfaceHit, so each new best triangle's record, corners and normals are asked
+// for at once, from the vertex indices its packet holds (waiting on the record first was most of
+// the cost of a full intersect over a nearest query).
 template <bool kCheckEachCandidate, bool kPrefetchShading>
 void WideBvh::find_nearest(const Ray& ray, Nearest* best) const {
   const ShearedRay4 sheared4(ray);
@@ -396,10 +396,10 @@ void WideBvh::find_nearest(const Ray& ray, Nearest* best) const {
               th.t = h.t;
             }
             if (kPrefetchShading && prim < scene_.triangles.size()) {
-              const Triangle& tri = scene_.triangles[prim];
+              __builtin_prefetch(&scene_.triangles[prim]);
               for (int v = 0; v < 3; ++v) {
-                __builtin_prefetch(&scene_.positions[tri.v[v]]);
-                if (!scene_.normals.empty()) __builtin_prefetch(&scene_.normals[tri.v[v]]);
+                __builtin_prefetch(&scene_.positions[info.vertex[v][lane]]);
+                if (!scene_.normals.empty()) __builtin_prefetch(&scene_.normals[info.vertex[v][lane]]);
               }
             }
             best->prim = prim;

@@ -39,19 +39,21 @@ struct alignas(64) WideNode {
 };
 
 /// One packet of a wide leaf: up to four of its entries for the SIMD triangle test, with what each
-/// lane holds and which primitive it is, in three whole cache lines, so that visiting a leaf reads
-/// nothing else (the lane masks and primitive indices in arrays of their own cost a cache miss
-/// each on a million-triangle mesh).
+/// lane holds, which primitive it is and its vertices, in four whole cache lines, so that visiting
+/// a leaf reads nothing else (lane masks and primitive indices in arrays of their own cost a cache
+/// miss each on a million-triangle mesh), and a full intersect can ask for the best triangle's
+/// vertex data the moment it is found rather than after a miss on the scene's triangle record.
 struct alignas(64) LeafPacket {
   Triangle4 tri;
   uint32_t prim[Triangle4::kLanes] = {};  ///< each lane's primitive (scene index)
   uint32_t first = 0;                     ///< leaf-order entry of lane 0
+  uint32_t vertex[3][Triangle4::kLanes] = {};  ///< each triangle lane's vertex indices
   /// Bit k for lane k: an entry of the leaf (a triangle or a sphere); a triangle; an entry that
   /// may answer a nearest-hit query (a sphere, or a triangle Part 1 shades).
   uint8_t entries = 0, triangles = 0, nearest = 0;
 };
 
-static_assert(sizeof(WideNode) == 256 && sizeof(LeafPacket) == 192,
+static_assert(sizeof(WideNode) == 256 && sizeof(LeafPacket) == 256,
               "wide nodes and leaf packets are meant to fill whole cache lines");
 
 /// What a collapse made, for bench and `pathtracer --info`.
