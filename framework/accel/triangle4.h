@@ -1,6 +1,7 @@
-// Four triangles against one ray at once (SSE where the target has it): a filter in front of the
-// sheared triangle test that throws out, with the very same float operations, the triangles that
-// test would throw out on its first checks, so most triangles of a leaf cost a quarter of a test.
+// Four triangles against one ray at once (SSE where the target has it): the sheared triangle test
+// in four lanes with the very same float operations, so most triangles of a leaf cost a quarter of
+// a test and a hit comes with Part 1's t and barycentrics; only a lane with an edge function of
+// exactly 0 (or a non-finite value) is handed back to the scalar test.
 // SOLUTION-ONLY FILE: not in the student handout, since it holds complete Part 1 and Part 2 answers.
 #pragma once
 
