@@ -130,6 +130,7 @@ TEST_F(CliTest, BadInputIsNamedAndNeverACrash) {
       {"-d 0 -f a.png " + s, 2, "--focal-distance"},
       {"--bvh octree -f a.png " + s, 2, "--bvh"},
       {"--bvh-width 3 -f a.png " + s, 2, "--bvh-width"},
+      {"--bvh-width 4 -f a.png " + s, 2, "--bvh-width"},  // the wide tree has eight children
       {"--frobnicate -f a.png " + s, 2, "--frobnicate"},
       {"-s many -f a.png " + s, 2, "many"},
       {"-f a.png", 2, "scene"},                                // no scene at all

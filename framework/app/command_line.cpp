@@ -133,9 +133,10 @@ int parse_command_line(int argc, char** argv, CommandLine* command, std::ostream
       ->check(CLI::IsMember({"sah", "median", "none"}))->capture_default_str();
   app.add_option("--leaf-size", s.bvh_leaf_size, "Most primitives in a BVH leaf")->capture_default_str();
   app.add_option("--bvh-width", s.bvh_width,
-                 "2: trace Part 2's binary BVH; 4: the framework's 4-wide BVH built from it "
-                 "(the same hits, faster)")
-      ->check(CLI::IsMember({2, 4}))->capture_default_str();
+                 "2: trace Part 2's binary BVH; " + std::to_string(kWideBvhWidth) +
+                     ": the framework's " + std::to_string(kWideBvhWidth) +
+                     "-wide BVH built from it (the same hits, faster)")
+      ->check(CLI::IsMember({2, kWideBvhWidth}))->capture_default_str();
   app.add_flag("--normals", normals, "Show shading normals (n * 0.5 + 0.5) instead of light");
   app.add_flag("--mis", s.mis, "Combine light and BSDF samples by multiple importance sampling");
   bool no_rr = false;

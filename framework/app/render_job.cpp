@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <string>
 
 #include "1-raygen/pixel_loop.h"
 #include "1-raygen/scene_intersect.h"
@@ -33,7 +34,8 @@ std::unique_ptr<RayQuery> make_ray_query(const RenderSettings& settings, const S
   if (settings.accel == AccelKind::brute_force) return std::make_unique<BruteForce>(scene);
   auto binary = std::make_unique<Bvh>(scene, bvh_options(settings));
 #ifdef PT_HAVE_WIDE_BVH
-  if (settings.bvh_width == 4) return std::make_unique<WideBvh>(scene, *binary);
+  static_assert(kWideBvhWidth == WideNode::kWidth, "--bvh-width must name the wide tree's width");
+  if (settings.bvh_width == kWideBvhWidth) return std::make_unique<WideBvh>(scene, *binary);
 #endif
   return binary;  // --bvh-width 2, or a handout, which has no wide tree
 }
@@ -49,16 +51,17 @@ std::string describe_bvh(const RenderSettings& settings, const Scene& scene) {
                 s.split == BvhSplitMethod::sah ? "sah" : "median", settings.bvh_leaf_size, s.nodes,
                 s.leaves, s.mean_leaf_size, s.max_leaf_size, s.depth, s.sah_cost, s.build_ms);
   std::string text = line;
-  if (settings.bvh_width == 4) {
+  if (settings.bvh_width == kWideBvhWidth) {
 #ifdef PT_HAVE_WIDE_BVH
     const WideBvhStats& w = WideBvh(scene, binary).stats();
     std::snprintf(line, sizeof line,
-                  "bvh width 4 (traced): %u nodes (mean %.2f children), depth %u, collapsed in "
+                  "bvh width %d (traced): %u nodes (mean %.2f children), depth %u, collapsed in "
                   "%.1f ms\n",
-                  w.nodes, w.mean_children, w.depth, w.build_ms);
+                  kWideBvhWidth, w.nodes, w.mean_children, w.depth, w.build_ms);
     text += line;
 #else
-    text += "bvh width 4: not in this build (the handout); the binary tree above is traced\n";
+    text += "bvh width " + std::to_string(kWideBvhWidth) +
+            ": not in this build (the handout); the binary tree above is traced\n";
 #endif
   }
   return text;

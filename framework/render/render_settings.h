@@ -6,6 +6,10 @@
 
 namespace pt {
 
+/// Children a node of the framework's wide BVH (framework/accel) has: the --bvh-width that asks
+/// for it. Stated here because the settings cannot see that solution-only library.
+constexpr int kWideBvhWidth = 8;
+
 /// Which acceleration structure answers the rays.
 enum class AccelKind { bvh_sah, bvh_median, brute_force };
 
@@ -32,9 +36,9 @@ struct RenderSettings {
   uint64_t seed = 0;                    ///< --seed: same seed, same image
   AccelKind accel = AccelKind::bvh_sah; ///< --bvh sah|median|none
   int bvh_leaf_size = 4;                ///< --leaf-size
-  /// --bvh-width: 2 traverses Part 2's binary tree itself; 4 the framework's 4-wide tree collapsed
-  /// from it (same answers, faster). The grader's Part 2 renders ask for 2.
-  int bvh_width = 4;
+  /// --bvh-width: 2 traverses Part 2's binary tree itself; kWideBvhWidth the framework's wide tree
+  /// collapsed from it (same answers, faster). The grader's Part 2 renders ask for 2.
+  int bvh_width = kWideBvhWidth;
   ShadingMode shading = ShadingMode::light;
   bool russian_roulette = true;         ///< --no-rr turns it off
   bool mis = false;                     ///< --mis: combine light and BSDF samples
