@@ -386,9 +386,10 @@ std::vector<std::filesystem::path> write_convergence_outputs(const ConvergenceOp
                     {"RMSE", m.rmse}});
     plot_rows.push_back({m.strategy, m.samples, m.seconds, m.rel_mse, int(plot_rows.size()) + 2});
   }
+  // JSON has no NaN: a figure that could not be told is null.
+  auto number = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
   json times = json::array();
   for (const StrategyTime& t : r.times) {
-    auto number = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
     times.push_back({{"strategy", t.strategy},
                      {"seconds", number(t.time.seconds)},
                      {"extrapolated", t.time.extrapolated},
@@ -423,9 +424,7 @@ std::vector<std::filesystem::path> write_convergence_outputs(const ConvergenceOp
       {"allocation_bound",
        {{"strategy", r.adaptive_base},
         {"best_sample_fraction", r.allocation_bound.best_sample_fraction},
-        {"best_time_fraction", std::isfinite(r.allocation_bound.best_time_fraction)
-                                   ? json(r.allocation_bound.best_time_fraction)
-                                   : json(nullptr)},
+        {"best_time_fraction", number(r.allocation_bound.best_time_fraction)},
         {"zero_variance_share", r.allocation_bound.zero_variance_share}}}};
   if (r.has_speedup)
     doc["speedup"] = {{"budget", r.speedup.budget},
