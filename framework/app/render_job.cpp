@@ -53,7 +53,8 @@ std::string describe_bvh(const RenderSettings& settings, const Scene& scene) {
   std::string text = line;
   if (settings.bvh_width == kWideBvhWidth) {
 #ifdef PT_HAVE_WIDE_BVH
-    const WideBvhStats& w = WideBvh(scene, binary).stats();
+    const WideBvh wide(scene, binary);  // kept alive: stats() is a reference into it
+    const WideBvhStats& w = wide.stats();
     std::snprintf(line, sizeof line,
                   "bvh width %d (traced): %u nodes (mean %.2f children), depth %u, collapsed in "
                   "%.1f ms\n",
