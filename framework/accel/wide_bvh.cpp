@@ -325,6 +325,15 @@ inline int leaf_lines(uint32_t count) {
   return count > Triangle4::kLanes ? int(2 * sizeof(LeafPacket) / 64) : int(sizeof(LeafPacket) / 64);
 }
 
+/// A traversal that would push past WideBvh::kStackSize entries. For a traceable ray the bound
+/// holds by construction (each level down pushes at most all but one of a node's children, and
+/// the tree is no deeper than Bvh::kMaxDepth); a push is still checked, so a broken invariant is
+/// an exception, never a write past the stack.
+[[noreturn]] void stack_overflow() {
+  throw std::logic_error("WideBvh: the traversal stack would overflow (a tree deeper than "
+                         "Bvh::kMaxDepth, or a box test that lets a ray into every child)");
+}
+
 /// A node or leaf still to visit, with the distance at which the ray enters its box.
 struct StackEntry {
   uint32_t child;
@@ -431,7 +440,10 @@ void WideBvh::find_nearest(const Ray& ray, Nearest* best) const {
           prefetch_lines(&packets_[node.child[k]], leaf_lines(node.count[k]));
         else
           prefetch_lines(&nodes_[node.child[k]], int(sizeof(WideNode) / 64));
-        if (next >= 0) stack[top++] = {node.child[next], node.count[next], t_entry[next]};
+        if (next >= 0) {
+          if (top == kStackSize) stack_overflow();
+          stack[top++] = {node.child[next], node.count[next], t_entry[next]};
+        }
         next = k;
       }
       e = {node.child[next], node.count[next], t_entry[next]};
@@ -440,7 +452,7 @@ void WideBvh::find_nearest(const Ray& ray, Nearest* best) const {
 }
 
 bool WideBvh::intersect(const Ray& ray, SurfaceHit* hit) const {
-  if (nodes_.empty()) return false;
+  if (nodes_.empty() || !is_traceable(ray)) return false;
   Nearest best;
   find_nearest<false, true>(ray, &best);
   if (!best.found()) return false;
@@ -461,7 +473,7 @@ bool WideBvh::intersect(const Ray& ray, SurfaceHit* hit) const {
 }
 
 bool WideBvh::nearest(const Ray& ray, NearestHit* hit) const {
-  if (nodes_.empty()) return false;
+  if (nodes_.empty() || !is_traceable(ray)) return false;
   Nearest best;
   find_nearest<false, false>(ray, &best);
   if (!best.found()) return false;
@@ -470,7 +482,7 @@ bool WideBvh::nearest(const Ray& ray, NearestHit* hit) const {
 }
 
 bool WideBvh::occluded(const Ray& ray) const {
-  if (nodes_.empty()) return false;
+  if (nodes_.empty() || !is_traceable(ray)) return false;
   const ShearedRay4 sheared4(ray);
   const ShearedRay& sheared = sheared4.r;
   const Box4Ray box_ray(ray);
@@ -510,6 +522,7 @@ bool WideBvh::occluded(const Ray& ray) const {
         prefetch_lines(&packets_[node.child[k]], leaf_lines(node.count[k]));
       else
         prefetch_lines(&nodes_[node.child[k]], int(sizeof(WideNode) / 64));
+      if (top == kStackSize) stack_overflow();
       stack[top++] = {node.child[k], node.count[k], 0.0f};
     }
   }

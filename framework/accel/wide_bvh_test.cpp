@@ -3,6 +3,7 @@
 // well formed; and images rendered through it are brute force's, pixel for pixel.
 // SOLUTION-ONLY FILE: not in the student handout, since it holds complete Part 1 and Part 2 answers.
 #include <cstdio>
+#include <limits>
 #include <utility>
 #include <string>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "1-raygen/pixel_loop.h"
 #include "2-bvh/tests/bvh_check.h"
 #include "2-bvh/tests/bvh_test_inputs.h"
+#include "1-raygen/scene_intersect.h"
 #include "1-raygen/triangle_intersect.h"
 #include "accel/wide_bvh.h"
 
@@ -212,6 +214,52 @@ TEST(FrameworkWideBvhDegenerate, UnshadeableWinnerFallsBackToTheNextHit) {
 
 /// Checks the tree: every leaf-order entry in exactly one leaf whose box holds it, one to four
 /// children a node, unused slots empty, every node the child of exactly one other (or the root).
+// (b) A ray with a NaN or infinite component enters every box of a slab test (a NaN narrows
+// nothing), and the wide tree's unused slots point at the root: its traversal stack, with no
+// bound, pushed the root for ever. Such rays are misses in every ray query, before any walk.
+TEST(FrameworkWideBvhDegenerate, NonFiniteRaysAreMissesInEveryQuery) {
+  Scene scene = test::flat_grid();
+  scene.spheres.push_back(Sphere{glm::vec3(2, 2, 1), 0.5f, 0});
+  scene.materials.emplace_back();
+  const Bvh binary(scene);
+  const WideBvh wide(scene, binary);
+  const BruteForce brute(scene);
+  const Ray good{{2.2f, 2.3f, 5.0f}, {0.0f, 0.0f, -1.0f}};
+  SurfaceHit hit;
+  NearestHit quick;
+  ASSERT_TRUE(brute.intersect(good, &hit) && binary.intersect(good, &hit) && wide.intersect(good, &hit) &&
+              wide.nearest(good, &quick) && binary.occluded(good) && wide.occluded(good))
+      << "the finite ray must hit, or the misses below prove nothing";
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float inf = std::numeric_limits<float>::infinity();
+  std::vector<std::pair<std::string, Ray>> bad;
+  for (int a = 0; a < 3; ++a)
+    for (float v : {nan, inf, -inf}) {
+      Ray o = good, d = good;
+      o.o[a] = v;
+      d.d[a] = v;
+      bad.push_back({"origin[" + std::to_string(a) + "] = " + std::to_string(v), o});
+      bad.push_back({"direction[" + std::to_string(a) + "] = " + std::to_string(v), d});
+    }
+  Ray zero = good, tmin = good, tmax = good;
+  zero.d = glm::vec3(0.0f);
+  tmin.tmin = nan;
+  tmax.tmax = nan;
+  bad.push_back({"zero direction", zero});
+  bad.push_back({"tmin NaN", tmin});
+  bad.push_back({"tmax NaN", tmax});
+  for (const auto& [what, ray] : bad) {
+    SCOPED_TRACE(what);
+    EXPECT_FALSE(wide.intersect(ray, &hit));
+    EXPECT_FALSE(wide.nearest(ray, &quick));
+    EXPECT_FALSE(wide.occluded(ray));
+    EXPECT_FALSE(binary.intersect(ray, &hit));
+    EXPECT_FALSE(binary.occluded(ray));
+    EXPECT_FALSE(brute.intersect(ray, &hit));
+    EXPECT_FALSE(brute.occluded(ray));
+  }
+}
+
 TEST(FrameworkWideBvhBuild, TreeIsWellFormed) {
   Scene scene;
   std::string why;

@@ -1,8 +1,10 @@
 // A ray: origin, direction and the open interval (tmin, tmax) of distances that count.
 #pragma once
 
-#include <glm/vec3.hpp>
+#include <cmath>
 #include <limits>
+
+#include <glm/vec3.hpp>
 
 namespace pt {
 
@@ -16,5 +18,16 @@ struct Ray {
 
   glm::vec3 at(float t) const { return o + t * d; }
 };
+
+/// Whether a ray can hit anything: a finite origin, a finite direction that is not zero, and an
+/// interval with no NaN (tmax may be +inf). Every ray query answers any other ray with a miss, at
+/// its entry: a NaN compares false everywhere, so a slab test would let such a ray into every box
+/// of a tree, empty ones included.
+inline bool is_traceable(const Ray& r) {
+  for (int a = 0; a < 3; ++a)
+    if (!std::isfinite(r.o[a]) || !std::isfinite(r.d[a])) return false;
+  return (r.d.x != 0.0f || r.d.y != 0.0f || r.d.z != 0.0f) && !std::isnan(r.tmin) &&
+         !std::isnan(r.tmax);
+}
 
 }  // namespace pt

@@ -117,6 +117,7 @@ bool primitive_occludes(const Scene& scene, uint32_t primitive, const Ray& ray) 
 }
 
 bool BruteForce::intersect(const Ray& ray, SurfaceHit* hit) const {
+  if (!is_traceable(ray)) return false;  // as every ray query answers it
   Ray r = ray;
   bool found = false;
   const uint32_t n = scene_.primitive_count();
@@ -130,6 +131,7 @@ bool BruteForce::intersect(const Ray& ray, SurfaceHit* hit) const {
 }
 
 bool BruteForce::occluded(const Ray& ray) const {
+  if (!is_traceable(ray)) return false;
   const uint32_t n = scene_.primitive_count();
   for (uint32_t i = 0; i < n; ++i)
     if (primitive_occludes(scene_, i, ray)) return true;

@@ -88,7 +88,8 @@ bool Bvh::leaf_occludes(const BvhNode& leaf, const Ray& ray) const {
 }
 
 bool Bvh::intersect(const Ray& ray, SurfaceHit* hit) const {
-  if (nodes_.empty()) return false;
+  // A ray with a NaN or infinite component is a miss before the walk (is_traceable).
+  if (nodes_.empty() || !is_traceable(ray)) return false;
   NearestState st(ray);
   traverse_nearest(&st);
   if (!st.found()) return false;
@@ -163,7 +164,7 @@ void Bvh::traverse_nearest(NearestState* state) const {
 }
 
 bool Bvh::occluded(const Ray& ray) const {
-  if (nodes_.empty()) return false;
+  if (nodes_.empty() || !is_traceable(ray)) return false;
   const BoxRay box(ray);
   // BEGIN SOLUTION
   // Order does not matter when any occluder will do: no distances kept, no sorting.
