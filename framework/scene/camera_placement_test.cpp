@@ -1,4 +1,7 @@
 // The course's camera placement: centred on the scene, the file's direction and distance kept.
+#include <cmath>
+#include <stdexcept>
+
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
@@ -32,6 +35,28 @@ TEST(FrameworkCamera, EmptyBoundsLeaveTheCamera) {
   c.camera_to_world[3] = glm::vec4(1, 2, 3, 1);
   centre_camera_on(Bounds3{}, &c);
   EXPECT_EQ(glm::vec3(c.camera_to_world[3]), glm::vec3(1, 2, 3));
+}
+
+// (b) Huge finite coordinates overflowed float on the way (the distance's square), which placed
+// the camera at NaN: its rays were all NaN. The placement is finite, or an exception says why.
+TEST(FrameworkCamera, HugeCoordinatesPlaceTheCameraFinitelyOrThrow) {
+  Camera c;
+  c.camera_to_world[3] = glm::vec4(0, 0, 3e19f, 1);
+  Bounds3 box;
+  box.grow(glm::vec3(-3e19f, -3e19f, -1));
+  box.grow(glm::vec3(3e19f, 3e19f, 1));
+  centre_camera_on(box, &c);
+  const glm::vec3 p(c.camera_to_world[3]);
+  EXPECT_TRUE(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z));
+  EXPECT_FLOAT_EQ(p.z, 3e19f);
+  // A camera so far from the scene that, moved to look at its centre, it leaves float's range.
+  Camera far;
+  far.camera_to_world[2] = glm::vec4(1, 0, 0, 0);  // looking down -X
+  far.camera_to_world[3] = glm::vec4(-3e38f, 3e38f, 0, 1);
+  Bounds3 wide;
+  wide.grow(glm::vec3(3e38f, -3e38f, 0));
+  wide.grow(glm::vec3(3e38f, -3e38f, 0));
+  EXPECT_THROW(centre_camera_on(wide, &far), std::range_error);
 }
 
 }  // namespace
