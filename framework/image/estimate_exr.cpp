@@ -9,6 +9,11 @@ const char* const kChannels[] = {"R", "G", "B", "varR", "varG", "varB", "n"};
 
 }  // namespace
 
+ChannelImage estimate_channels(int width, int height) {
+  return ChannelImage(width, height,
+                      std::vector<std::string>(std::begin(kChannels), std::end(kChannels)));
+}
+
 void write_estimate_exr(const std::string& path, const RenderEstimate& estimate) {
   const size_t pixels = size_t(estimate.width) * size_t(estimate.height);
   if (estimate.mean.size() != pixels || estimate.variance.size() != pixels ||
@@ -16,8 +21,7 @@ void write_estimate_exr(const std::string& path, const RenderEstimate& estimate)
     throw ImageError(path, "the estimate's arrays do not match its size " +
                                std::to_string(estimate.width) + "x" +
                                std::to_string(estimate.height));
-  ChannelImage image(estimate.width, estimate.height,
-                     std::vector<std::string>(std::begin(kChannels), std::end(kChannels)));
+  ChannelImage image = estimate_channels(estimate.width, estimate.height);
   for (size_t i = 0; i < pixels; ++i) {
     float* v = &image.values[i * 7];
     for (int c = 0; c < 3; ++c) {

@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "image/image.h"
 #include "stats/block_ttest.h"
 
 namespace pt {
@@ -11,6 +12,10 @@ namespace pt {
 /// one sample) and n (samples), all 32-bit float, so a reference keeps what the block t-test
 /// needs. Throws ImageError.
 void write_estimate_exr(const std::string& path, const RenderEstimate& estimate);
+
+/// An image of the channels write_estimate_exr writes, in its order (R, G, B, varR, varG, varB,
+/// n), zero-filled: for a writer that fills it from its own statistics and calls write_exr.
+ChannelImage estimate_channels(int width, int height);
 
 /// Reads what write_estimate_exr wrote. Throws ImageError naming the path and the channel that
 /// is missing.

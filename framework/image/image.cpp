@@ -80,18 +80,28 @@ bool is_supported_image_extension(const std::string& path) {
   return ext == ".png" || ext == ".exr";
 }
 
+void write_png(const std::string& path, int width, int height,
+               const std::function<glm::vec3(size_t)>& linear) {
+  check_writable_target(path);
+  check_size(path, width, height);
+  if (lower_extension(path) != ".png") throw ImageError(path, "write_png needs a .png file");
+  const size_t pixels = size_t(width) * size_t(height);
+  std::vector<unsigned char> bytes(pixels * 3);
+  for (size_t i = 0; i < pixels; ++i) {
+    const glm::vec3 v = linear(i);
+    for (int c = 0; c < 3; ++c)
+      bytes[3 * i + size_t(c)] = (unsigned char)std::lround(255.0f * srgb_encode(v[c]));
+  }
+  OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
+  spec.attribute("oiio:ColorSpace", "sRGB");
+  write_pixels(path, spec, OIIO::TypeDesc::UINT8, bytes.data());
+}
+
 void write_image(const std::string& path, const Image& image) {
   check_writable_target(path);
   check_size(path, image.width(), image.height());
   if (lower_extension(path) == ".png") {
-    std::vector<unsigned char> bytes(image.pixels().size() * 3);
-    for (size_t i = 0; i < image.pixels().size(); ++i)
-      for (int c = 0; c < 3; ++c)
-        bytes[3 * i + size_t(c)] =
-            (unsigned char)std::lround(255.0f * srgb_encode(image.pixels()[i][c]));
-    OIIO::ImageSpec spec(image.width(), image.height(), 3, OIIO::TypeDesc::UINT8);
-    spec.attribute("oiio:ColorSpace", "sRGB");
-    write_pixels(path, spec, OIIO::TypeDesc::UINT8, bytes.data());
+    write_png(path, image.width(), image.height(), [&](size_t i) { return image.pixels()[i]; });
   } else {
     OIIO::ImageSpec spec(image.width(), image.height(), 3, OIIO::TypeDesc::FLOAT);
     spec.attribute("oiio:ColorSpace", "Linear");

@@ -1,6 +1,8 @@
 // Images in memory and on disk: linear float RGB, written as sRGB PNG or linear float EXR.
 #pragma once
 
+#include <cstddef>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -67,6 +69,12 @@ float srgb_decode(float encoded);
 /// linear 32-bit float. Throws ImageError naming the path for another extension, an empty
 /// image, or a file that cannot be written.
 void write_image(const std::string& path, const Image& image);
+
+/// Writes `width` × `height` pixels as an 8-bit sRGB .png, asking `linear` for pixel i (row-major,
+/// top row first) as it converts, so that the only image-sized buffer is the 3 bytes a pixel of
+/// the PNG itself. Throws ImageError as write_image does.
+void write_png(const std::string& path, int width, int height,
+               const std::function<glm::vec3(size_t)>& linear);
 
 /// Reads a .png (sRGB decoded to linear) or an .exr (its R, G, B channels, or its first
 /// channels when they are not named so); grey images are spread to RGB. Throws ImageError.
