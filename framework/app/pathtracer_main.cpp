@@ -5,14 +5,16 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <new>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "command_line.h"
 #include "render_job.h"
-#include "image/estimate_exr.h"
 #include "image/image.h"
 #include "image/sample_rate.h"
+#include "render/available_memory.h"
 #include "render/film.h"
 #include "render/progress.h"
 #include "render/tile_renderer.h"
@@ -37,9 +39,29 @@ int run(int argc, char** argv) {
   }
   if (!settings.environment_map.empty()) {
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(settings.environment_map, ec))
+    if (!std::filesystem::exists(settings.environment_map, ec))
       throw std::runtime_error("-e/--env " + settings.environment_map + ": no such file");
+    if (!std::filesystem::is_regular_file(settings.environment_map, ec))
+      throw std::runtime_error("-e/--env " + settings.environment_map +
+                               ": not a regular file (a folder or a device?)");
   }
+
+  // The film and its output buffers are the render's one image-sized cost: refused up front,
+  // with the bytes, rather than a bare bad_alloc after the scene and its BVH are built (before
+  // the scene is read when -r gives the size).
+  auto check_memory = [&] {
+    const uint64_t need = film_peak_bytes(settings.width, settings.height, command.output_path,
+                                          settings.adaptive);
+    const uint64_t have = available_memory_bytes();
+    if (need > have)
+      throw UsageError("-r/--resolution " + std::to_string(settings.width) + " " +
+                       std::to_string(settings.height) + ": the image needs " +
+                       std::to_string(need) + " bytes (" + describe_bytes(need) + ", " +
+                       std::to_string(need / (uint64_t(settings.width) * uint64_t(settings.height))) +
+                       " a pixel for its film and output) but only " + std::to_string(have) +
+                       " bytes (" + describe_bytes(have) + ") are available");
+  };
+  if (command.resolution_given && !command.info) check_memory();
 
   Scene scene = load_collada(command.scene_path);
   if (command.info) {
@@ -49,12 +71,21 @@ int run(int argc, char** argv) {
   if (!command.resolution_given) {
     apply_default_resolution(scene.camera.aspect, &settings);
     check_cell(settings);
+    check_memory();
   }
-  if (!command.file_camera) centre_camera_on(scene.bounds(), &scene.camera);
+  if (!command.file_camera) {
+    try {
+      centre_camera_on(scene.bounds(), &scene.camera);
+    } catch (const std::range_error& e) {
+      throw SceneError(command.scene_path, "", e.what());
+    }
+  }
   apply_lens(settings, &scene.camera);
   if (settings.shading == ShadingMode::light) {
     std::string fallback = materials_falling_back(scene, rendered_material_kinds(settings));
     if (!fallback.empty()) std::cerr << fallback << "\n";
+    std::string dark = no_light_warning(settings, scene);
+    if (!dark.empty()) std::cerr << "warning: " << dark << "\n";
   }
 
   std::unique_ptr<RayQuery> query = make_ray_query(settings, scene);
@@ -64,11 +95,7 @@ int run(int argc, char** argv) {
   RenderReport report = render_scene(settings, scene, *query, &film, options);
   std::cout << summary_line(report) << "\n";
 
-  std::string ext = std::filesystem::path(command.output_path).extension().string();
-  if (ext == ".exr" || ext == ".EXR")
-    write_estimate_exr(command.output_path, film.estimate());
-  else
-    write_image(command.output_path, film.mean_image());
+  write_film(command.output_path, film);
   std::cout << "wrote " << command.output_path << "\n";
   if (settings.adaptive) {
     // The course's NAME_rate.png beside the render: where the samples went.
@@ -94,6 +121,9 @@ int main(int argc, char** argv) {
     return pt::kExitIoError;
   } catch (const pt::ImageError& e) {
     std::cerr << "pathtracer: " << e.what() << "\n";
+    return pt::kExitIoError;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "pathtracer: out of memory (the scene and its BVH did not fit)\n";
     return pt::kExitIoError;
   } catch (const std::exception& e) {
     std::cerr << "pathtracer: " << e.what() << "\n";

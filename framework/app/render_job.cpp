@@ -14,6 +14,7 @@
 #include "accel/wide_bvh.h"
 #endif
 #include "geometry/counting_ray_query.h"
+#include "lights/light_set.h"
 
 namespace pt {
 
@@ -95,6 +96,14 @@ TracedRadianceFn make_radiance(const RenderSettings& settings, const Scene& scen
     context.rays.add(counting->thread_count() - before);
     return L;
   };
+}
+
+std::string no_light_warning(const RenderSettings& settings, const Scene& scene) {
+  if (settings.shading == ShadingMode::normals || !settings.environment_map.empty()) return "";
+  // The integrator shows normals exactly when this set is empty.
+  if (!LightSet(scene, nullptr).empty()) return "";
+  return scene.source + ": nothing in the scene emits light (no light that can light it, no "
+                        "emissive surface): rendering its shading normals instead of light";
 }
 
 void apply_lens(const RenderSettings& settings, Camera* camera) {

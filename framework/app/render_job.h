@@ -33,6 +33,10 @@ std::vector<MaterialKind> rendered_material_kinds(const RenderSettings& settings
 TracedRadianceFn make_radiance(const RenderSettings& settings, const Scene& scene,
                                const RayQuery& query);
 
+/// The warning a render owes when it will show normals instead of light because nothing in the
+/// scene emits (no usable light, no emissive surface, no -e map); empty otherwise.
+std::string no_light_warning(const RenderSettings& settings, const Scene& scene);
+
 /// Applies -b and -d to the scene's camera.
 void apply_lens(const RenderSettings& settings, Camera* camera);
 
