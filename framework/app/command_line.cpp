@@ -1,5 +1,6 @@
 #include "command_line.h"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -17,6 +18,7 @@ namespace {
 
 constexpr int kMaxResolution = 16384;
 constexpr int kMaxThreads = 1024;
+constexpr float kMaxLength = 1e18f;
 
 std::string quoted(const std::string& s) { return "'" + s + "'"; }
 
@@ -39,6 +41,18 @@ class HelpFormatter : public CLI::Formatter {
     return out;
   }
 };
+
+/// --seed as a whole number from 0 to 2^64 - 1: CLI11 would wrap "-1" around and saturate a
+/// number too large, each a seed nobody asked for.
+uint64_t parse_seed(const std::string& text) {
+  uint64_t v = 0;
+  const char* end = text.data() + text.size();
+  const auto r = std::from_chars(text.data(), end, v);
+  if (text.empty() || r.ec != std::errc() || r.ptr != end)
+    throw UsageError("--seed must be a whole number from 0 to 18446744073709551615 (got " +
+                     quoted(text) + ")");
+  return v;
+}
 
 // Everything that can be checked from the command line alone.
 void check_settings(const CommandLine& c, const std::vector<int>& resolution,
@@ -70,10 +84,14 @@ void check_settings(const CommandLine& c, const std::vector<int>& resolution,
     if (!(adaptive[1] > 0.0) || !std::isfinite(adaptive[1]))
       throw UsageError("-a/--adaptive: TOL must be a positive number (got " + number(adaptive[1]) + ")");
   }
-  if (!(s.lens_radius >= 0.0f) || !std::isfinite(s.lens_radius))
-    throw UsageError("-b/--aperture: the lens radius must be 0 or more (got " + number(s.lens_radius) + ")");
-  if (focal_given && (!(s.focal_distance > 0.0f) || !std::isfinite(s.focal_distance)))
-    throw UsageError("-d/--focal-distance must be positive (got " + number(s.focal_distance) + ")");
+  // Past kMaxLength the squares the ray tests take of the camera rays' coordinates overflow
+  // float: every ray would miss (a lens of 1e38 crashed the wide BVH with its NaN rays).
+  if (!(s.lens_radius >= 0.0f && s.lens_radius <= kMaxLength))
+    throw UsageError("-b/--aperture: the lens radius must be from 0 to " + number(kMaxLength) +
+                     " (got " + number(s.lens_radius) + ")");
+  if (focal_given && !(s.focal_distance > 0.0f && s.focal_distance <= kMaxLength))
+    throw UsageError("-d/--focal-distance must be positive and at most " + number(kMaxLength) +
+                     " (got " + number(s.focal_distance) + ")");
   if (s.bvh_leaf_size < 1 || s.bvh_leaf_size > 255)
     throw UsageError("--leaf-size must be between 1 and 255 (got " + std::to_string(s.bvh_leaf_size) + ")");
   if (!c.output_path.empty() && !is_supported_image_extension(c.output_path))
@@ -127,8 +145,9 @@ int parse_command_line(int argc, char** argv, CommandLine* command, std::ostream
   app.add_option("-p,--cell", cell, "Render only the cell of DX x DY pixels at column X, row Y")
       ->expected(4)->type_name("X Y DX DY");
   app.add_flag("--info", c.info, "Print what the scene holds and render nothing");
-  app.add_option("--seed", s.seed, "Random seed: the same seed gives the same image")
-      ->capture_default_str();
+  std::string seed = std::to_string(s.seed);
+  app.add_option("--seed", seed, "Random seed: the same seed gives the same image")
+      ->type_name("UINT")->capture_default_str();
   app.add_option("--bvh", bvh, "Acceleration structure")
       ->check(CLI::IsMember({"sah", "median", "none"}))->capture_default_str();
   app.add_option("--leaf-size", s.bvh_leaf_size, "Most primitives in a BVH leaf")->capture_default_str();
@@ -142,8 +161,7 @@ int parse_command_line(int argc, char** argv, CommandLine* command, std::ostream
   bool no_rr = false;
   app.add_flag("--no-rr", no_rr, "No Russian roulette: every path runs to the maximum depth");
   app.add_option("--bounce", s.only_bounce,
-                 "Only the light that took exactly this many bounces (0: emitted, 1: direct)")
-      ->check(CLI::NonNegativeNumber);
+                 "Only the light that took exactly this many bounces (0: emitted, 1: direct)");
   app.add_flag("--file-camera", c.file_camera,
                "Keep the file's camera where it is (default: centred on the scene, as the course does)");
 
@@ -174,6 +192,11 @@ int parse_command_line(int argc, char** argv, CommandLine* command, std::ostream
                               : AccelKind::bvh_sah;
     if (normals) s.shading = ShadingMode::normals;
     if (no_rr) s.russian_roulette = false;
+    s.seed = parse_seed(seed);
+    if (app.count("--bounce") && s.only_bounce < 0)
+      throw UsageError("--bounce must be 0 or more (got " + std::to_string(s.only_bounce) + ")");
+    if (app.count("--env") && s.environment_map.empty())
+      throw UsageError("-e/--env: the environment map's file name is empty");
     check_settings(c, resolution, cell, adaptive, app.count("--focal-distance") > 0);
     if (c.resolution_given) check_cell(s);
   } catch (const UsageError& e) {
