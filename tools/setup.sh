@@ -16,6 +16,7 @@ packages=(
   nlohmann-json3-dev    # bench output, manifests, grader results
   libcmark-dev          # write-up Markdown
   libembree-dev         # optional: bench --embree comparison only
+  clang libclang-rt-dev llvm  # optional: tools/fuzz (libFuzzer, its sanitizers, llvm-cov)
   chromium              # headless browser test of the write-up
 )
 
