@@ -33,6 +33,9 @@ constexpr bool kAddressSanitizer = false;
 #endif
 
 constexpr double kTimeLimit = 10.0;
+/// A big valid scene's load and render under AddressSanitizer's Debug build, several times
+/// slower than the Release one's, gets this much longer (a bad file's refusal never does).
+constexpr double kSanitizerSlowdown = kAddressSanitizer ? 6.0 : 1.0;
 constexpr long kMemoryLimit = 1L << 30;
 
 /// How a run of the pathtracer ended, and what it cost.
@@ -74,9 +77,10 @@ class HostileCli : public ::testing::Test {
     return file(name);
   }
 
-  /// Runs the pathtracer with `args` in the test's folder, killed at the time limit; with
+  /// Runs the pathtracer with `args` in the test's folder, killed at `time_limit`; with
   /// `address_space` > 0 under that RLIMIT_AS.
-  ChildRun pathtracer(const std::vector<std::string>& args, long address_space = 0) const {
+  ChildRun pathtracer(const std::vector<std::string>& args, long address_space = 0,
+                      double time_limit = kTimeLimit) const {
     const std::string binary = std::string(PT_BINARY_DIR) + "/framework/app/pathtracer";
     std::vector<std::string> words = {binary};
     words.insert(words.end(), args.begin(), args.end());
@@ -109,7 +113,7 @@ class HostileCli : public ::testing::Test {
       const pid_t done = wait4(pid, &status, WNOHANG, &usage);
       if (done == pid) break;
       run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      if (run.seconds > kTimeLimit) {
+      if (run.seconds > time_limit) {
         run.timed_out = true;
         kill(pid, SIGKILL);
         wait4(pid, &status, 0, &usage);
@@ -127,10 +131,10 @@ class HostileCli : public ::testing::Test {
   }
 
   /// The checks every run owes: ended by itself, in time, in memory.
-  static void expect_bounded(const ChildRun& run) {
+  static void expect_bounded(const ChildRun& run, double time_limit = kTimeLimit) {
     EXPECT_EQ(run.signal, 0) << run.describe();
     EXPECT_FALSE(run.timed_out) << run.describe();
-    EXPECT_LT(run.seconds, kTimeLimit) << run.describe();
+    EXPECT_LT(run.seconds, time_limit) << run.describe();
     EXPECT_LT(run.peak_bytes, kMemoryLimit) << run.describe();
     EXPECT_EQ(run.err.find("terminate called"), std::string::npos) << run.describe();
   }
@@ -447,22 +451,26 @@ TEST_F(HostileCli, OddButValidFilesRenderWithTheirWarnings) {
     expect_bounded(run);
     EXPECT_EQ(run.exit_code, 0) << run.describe();
   }
-  // (e), (f): 150,000 instances (quadratic, that was half a minute), 60,000 warnings.
+  // (e), (f): 150,000 instances (quadratic, that was half a minute), 60,000 warnings. Under
+  // AddressSanitizer's Debug build the BVH alone over 300,000 triangles takes a quarter of a
+  // minute: 30,000 instances there (the loader's own test keeps 262,000).
   {
     std::string nodes;
-    for (int i = 0; i < 150000; ++i)
+    const int instances = kAddressSanitizer ? 30000 : 150000;
+    for (int i = 0; i < instances; ++i)
       nodes += "<node><translate>" + std::to_string(2 * (i % 512)) + " " + std::to_string(2 * (i / 512)) +
                " 0</translate><instance_geometry url=\"#quad\"/></node>\n";
     const std::string path = write("many.dae", scene(geometries(quad()), nodes));
-    const ChildRun run = pathtracer({"--normals", "-r", "16", "16", "-s", "1", "-f", "many.png", path});
-    expect_bounded(run);
+    const double limit = kTimeLimit * kSanitizerSlowdown;
+    const ChildRun run = pathtracer({"--normals", "-r", "16", "16", "-s", "1", "-f", "many.png", path}, 0, limit);
+    expect_bounded(run, limit);
     EXPECT_EQ(run.exit_code, 0) << run.describe();
     std::string odd = "<node id=\"N\"><instance_geometry url=\"#quad\"/>\n";
     for (int i = 0; i < 60000; ++i) odd += "<wobble/>\n";
     const std::string text = scene(geometries(quad()), odd + "</node>\n");
     const std::string noisy = write("noisy.dae", text);
-    const ChildRun warned = pathtracer({"--normals", "-r", "16", "16", "-s", "1", "-f", "noisy.png", noisy});
-    expect_bounded(warned);
+    const ChildRun warned = pathtracer({"--normals", "-r", "16", "16", "-s", "1", "-f", "noisy.png", noisy}, 0, limit);
+    expect_bounded(warned, limit);
     EXPECT_EQ(warned.exit_code, 0) << warned.describe();
     const size_t last = text.rfind("<wobble/>");
     const std::string line = std::to_string(std::count(text.begin(), text.begin() + long(last), '\n') + 1);

@@ -102,6 +102,12 @@ size_t peak_rss() {
   return size_t(u.ru_maxrss) * 1024;
 }
 
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kTimed = false;  // AddressSanitizer's Debug build: its times say nothing
+#else
+constexpr bool kTimed = true;
+#endif
+
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -189,7 +195,9 @@ TEST(FrameworkHostileScene, InstancingPastTheLimitFailsAtOnceNamingTheNodeChain)
   const auto start = std::chrono::steady_clock::now();
   std::string msg = error_of(scene_file(geometries(triangle_geometry("g")) + doubling_chain(40),
                                         "<node id=\"top\"><instance_node url=\"#n0\"/></node>"));
-  EXPECT_LT(seconds_since(start), 5.0);
+  if (kTimed) {
+    EXPECT_LT(seconds_since(start), 5.0);
+  }
   EXPECT_MENTIONS(msg, "hostile.dae");
   EXPECT_MENTIONS(msg, "549755813888 primitives");  // 2^39 copies of the triangle
   EXPECT_MENTIONS(msg, std::to_string(kMaxInstancedPrimitives));
@@ -233,8 +241,10 @@ TEST(FrameworkHostileScene, ManySmallInstancesLoadInLinearTime) {
   const double seconds = seconds_since(start);
   EXPECT_EQ(l.scene.triangles.size(), size_t(kInstances));
   EXPECT_EQ(l.scene.positions[l.scene.triangles.back().v[1]], glm::vec3(999 + 1, 261, 0));
-  // Linear time is well under a second here; quadratic was minutes.
-  EXPECT_LT(seconds, 10.0) << "262,000 instances took " << seconds << " s";
+  // Linear time is about a second here; quadratic was minutes.
+  if (kTimed) {
+    EXPECT_LT(seconds, 10.0) << "262,000 instances took " << seconds << " s";
+  }
 }
 
 // (f) Each warning counted the file's lines from its start: 20,000 warnings took 6 s.
@@ -257,7 +267,9 @@ TEST(FrameworkHostileScene, ManyWarningsFindTheirLineNumbersQuickly) {
   ASSERT_GT(first, 0);
   EXPECT_EQ(line_of(l.warnings.back()), first + kWarnings - 1);
   EXPECT_EQ(line_of(l.warnings[12345]), first + 12345);
-  EXPECT_LT(seconds, 10.0) << kWarnings << " warnings took " << seconds << " s";
+  if (kTimed) {
+    EXPECT_LT(seconds, 10.0) << kWarnings << " warnings took " << seconds << " s";
+  }
 }
 
 /// A scene of one triangle whose material's effect is `effect_body` (inside <effect id="e">),
