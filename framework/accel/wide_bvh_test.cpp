@@ -241,6 +241,16 @@ TEST(FrameworkWideBvhDegenerate, NonFiniteRaysAreMissesInEveryQuery) {
       bad.push_back({"origin[" + std::to_string(a) + "] = " + std::to_string(v), o});
       bad.push_back({"direction[" + std::to_string(a) + "] = " + std::to_string(v), d});
     }
+  // What a NaN or infinite camera makes: every component at once, so no slab rejects a box.
+  for (float v : {nan, inf}) {
+    Ray all = good;
+    all.o = glm::vec3(v);
+    all.d = glm::vec3(v);
+    bad.push_back({"origin and direction all " + std::to_string(v), all});
+    Ray dir = good;
+    dir.d = glm::vec3(v, -v, v);
+    bad.push_back({"direction all " + std::to_string(v), dir});
+  }
   Ray zero = good, tmin = good, tmax = good;
   zero.d = glm::vec3(0.0f);
   tmin.tmin = nan;
