@@ -17,19 +17,19 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
-#include "1-raygen/camera_ray.h"
-#include "2-bvh/bvh.h"
+#include "parts/1-raygen/camera_ray.h"
+#include "parts/2-bvh/bvh.h"
 #ifdef PT_HAVE_WIDE_BVH
-#include "accel/wide_bvh.h"
+#include "app/accel/wide_bvh.h"
 #endif
-#include "convergence.h"
-#include "math/float_error.h"
-#include "math/frame.h"
-#include "rays/ray_set.h"
-#include "sampling/rng.h"
-#include "sampling/warp.h"
-#include "scene/collada_loader.h"
-#include "scene/scene_error.h"
+#include "app/convergence.h"
+#include "framework/math/float_error.h"
+#include "framework/math/frame.h"
+#include "framework/rays/ray_set.h"
+#include "framework/sampling/rng.h"
+#include "framework/sampling/warp.h"
+#include "framework/scene/collada_loader.h"
+#include "framework/scene/scene_error.h"
 
 #ifdef PT_HAVE_EMBREE
 #include <embree3/rtcore.h>

@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "image/estimate_exr.h"
-#include "image/image.h"
+#include "framework/image/estimate_exr.h"
+#include "framework/image/image.h"
 
 namespace fs = std::filesystem;
 

@@ -1,4 +1,4 @@
-#include "command_line.h"
+#include "app/command_line.h"
 
 #include <cmath>
 #include <cstdio>
@@ -10,7 +10,7 @@
 #include <CLI/CLI.hpp>
 #include <unistd.h>
 
-#include "image/image.h"
+#include "framework/image/image.h"
 
 namespace pt {
 namespace {

@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "render/render_settings.h"
+#include "framework/render/render_settings.h"
 
 namespace pt {
 

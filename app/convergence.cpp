@@ -1,4 +1,4 @@
-#include "convergence.h"
+#include "app/convergence.h"
 
 #include <algorithm>
 #include <chrono>
@@ -16,12 +16,12 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "plot/convergence_plot.h"
-#include "render/film.h"
-#include "render_job.h"
-#include "scene/camera_placement.h"
-#include "scene/collada_loader.h"
-#include "stats/image_error.h"
+#include "framework/plot/convergence_plot.h"
+#include "framework/render/film.h"
+#include "app/render_job.h"
+#include "framework/scene/camera_placement.h"
+#include "framework/scene/collada_loader.h"
+#include "framework/stats/image_error.h"
 
 namespace pt {
 namespace {

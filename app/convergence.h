@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "reference_cache.h"
-#include "render/render_settings.h"
-#include "stats/allocation_bound.h"
-#include "stats/time_to_error.h"
+#include "app/reference_cache.h"
+#include "framework/render/render_settings.h"
+#include "framework/stats/allocation_bound.h"
+#include "framework/stats/time_to_error.h"
 
 namespace pt {
 

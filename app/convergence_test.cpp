@@ -1,7 +1,7 @@
 // A tiny convergence study end to end on the project's Cornell box: every strategy measured at
 // every budget, errors that fall with the budget, a table the plotter reads, a reused reference.
 // Renders are seeded (pixel by pixel), so the figures are the same on every run.
-#include "convergence.h"
+#include "app/convergence.h"
 
 #include <unistd.h>
 
@@ -14,7 +14,7 @@
 
 #include <gtest/gtest.h>
 
-#include "plot/convergence_plot.h"
+#include "framework/plot/convergence_plot.h"
 
 namespace pt {
 namespace {

@@ -8,18 +8,18 @@
 #include <string>
 #include <vector>
 
-#include "command_line.h"
-#include "render_job.h"
-#include "image/estimate_exr.h"
-#include "image/image.h"
-#include "image/sample_rate.h"
-#include "render/film.h"
-#include "render/progress.h"
-#include "render/tile_renderer.h"
-#include "scene/camera_placement.h"
-#include "scene/collada_loader.h"
-#include "scene/scene_error.h"
-#include "scene/scene_summary.h"
+#include "app/command_line.h"
+#include "app/render_job.h"
+#include "framework/image/estimate_exr.h"
+#include "framework/image/image.h"
+#include "framework/render/sample_rate.h"
+#include "framework/render/film.h"
+#include "framework/render/progress.h"
+#include "framework/render/tile_renderer.h"
+#include "framework/scene/camera_placement.h"
+#include "framework/scene/collada_loader.h"
+#include "framework/scene/scene_error.h"
+#include "framework/scene/scene_summary.h"
 
 namespace pt {
 namespace {

@@ -1,4 +1,4 @@
-#include "reference_cache.h"
+#include "app/reference_cache.h"
 
 #include <cinttypes>
 #include <cstdio>
@@ -11,8 +11,8 @@
 #include <OpenImageIO/hash.h>
 #include <nlohmann/json.hpp>
 
-#include "image/estimate_exr.h"
-#include "stats/image_error.h"
+#include "framework/image/estimate_exr.h"
+#include "framework/stats/image_error.h"
 
 namespace pt {
 namespace {

@@ -7,9 +7,9 @@
 #include <iosfwd>
 #include <string>
 
-#include "image/image.h"
-#include "render/render_settings.h"
-#include "stats/block_ttest.h"
+#include "framework/image/image.h"
+#include "framework/render/render_settings.h"
+#include "framework/stats/block_ttest.h"
 
 namespace pt {
 

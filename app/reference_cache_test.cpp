@@ -1,6 +1,6 @@
 // The convergence study's reference is cached: reused while the scene's bytes and the image
 // settings are the same, made again when either changes, when asked, or when the cache is broken.
-#include "reference_cache.h"
+#include "app/reference_cache.h"
 
 #include <unistd.h>
 

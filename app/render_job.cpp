@@ -1,19 +1,19 @@
-#include "render_job.h"
+#include "app/render_job.h"
 
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
 
-#include "1-raygen/pixel_loop.h"
-#include "1-raygen/scene_intersect.h"
-#include "2-bvh/bvh.h"
-#include "4-global/integrator.h"
-#include "5-adaptive/adaptive_sampling.h"
+#include "parts/1-raygen/pixel_loop.h"
+#include "pipeline/1-raygen/scene_intersect.h"
+#include "parts/2-bvh/bvh.h"
+#include "pipeline/4-global/integrator.h"
+#include "parts/5-adaptive/adaptive_sampling.h"
 #ifdef PT_HAVE_WIDE_BVH
-#include "accel/wide_bvh.h"
+#include "app/accel/wide_bvh.h"
 #endif
-#include "geometry/counting_ray_query.h"
+#include "framework/geometry/counting_ray_query.h"
 
 namespace pt {
 

@@ -6,14 +6,14 @@
 #include <string>
 #include <vector>
 
-#include "geometry/ray_query.h"
-#include "render/film.h"
-#include "render/render_settings.h"
-#include "render/tile_renderer.h"
-#include "render/trace_context.h"
-#include "scene/camera.h"
-#include "scene/material.h"
-#include "scene/scene.h"
+#include "framework/geometry/ray_query.h"
+#include "framework/render/film.h"
+#include "framework/render/render_settings.h"
+#include "framework/render/tile_renderer.h"
+#include "framework/render/trace_context.h"
+#include "framework/scene/camera.h"
+#include "framework/scene/material.h"
+#include "framework/scene/scene.h"
 
 namespace pt {
 

@@ -1,10 +1,10 @@
 // render_job: the rays a render reports are every ray it traced, not only the camera's.
-#include "render_job.h"
+#include "app/render_job.h"
 
 #include <gtest/gtest.h>
 
-#include "geometry/counting_ray_query.h"
-#include "scene/collada_loader.h"
+#include "framework/geometry/counting_ray_query.h"
+#include "framework/scene/collada_loader.h"
 
 namespace pt {
 namespace {

@@ -1,11 +1,11 @@
-#include "handout.h"
+#include "grader/handout.h"
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
-#include "child_process.h"
+#include "framework/process/child_process.h"
 
 namespace fs = std::filesystem;
 

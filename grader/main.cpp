@@ -7,10 +7,10 @@
 
 #include <CLI/CLI.hpp>
 
-#include "grade.h"
-#include "handout.h"
-#include "manifest.h"
-#include "report.h"
+#include "grader/grade.h"
+#include "grader/handout.h"
+#include "grader/manifest.h"
+#include "grader/report.h"
 
 namespace fs = std::filesystem;
 using namespace pt::grader;

@@ -1,4 +1,4 @@
-#include "manifest.h"
+#include "grader/manifest.h"
 
 #include <fstream>
 #include <sstream>

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <cstdint>
 
-#include "math/float_error.h"
-#include "math/ray.h"
+#include "framework/math/float_error.h"
+#include "framework/math/ray.h"
 
 #if defined(__SSE2__) || defined(_M_X64) || (defined(_M_IX86_FP) && _M_IX86_FP >= 2)
 #define PT_ACCEL_SSE 1

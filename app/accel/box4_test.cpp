@@ -8,11 +8,11 @@
 
 #include <gtest/gtest.h>
 
-#include "2-bvh/ray_box.h"
-#include "accel/box4.h"
-#include "math/float_error.h"
-#include "sampling/rng.h"
-#include "sampling/warp.h"
+#include "parts/2-bvh/ray_box.h"
+#include "app/accel/box4.h"
+#include "framework/math/float_error.h"
+#include "framework/sampling/rng.h"
+#include "framework/sampling/warp.h"
 
 namespace pt {
 namespace {

@@ -10,9 +10,9 @@
 #include <glm/common.hpp>
 #include <glm/vec3.hpp>
 
-#include "geometry/surface_hit.h"
-#include "math/float_error.h"
-#include "math/ray.h"
+#include "framework/geometry/surface_hit.h"
+#include "framework/math/float_error.h"
+#include "framework/math/ray.h"
 
 namespace pt {
 

@@ -11,12 +11,12 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "1-raygen/triangle_intersect.h"
-#include "accel/sheared_triangle.h"
-#include "accel/triangle4.h"
-#include "math/float_error.h"
-#include "sampling/rng.h"
-#include "sampling/warp.h"
+#include "parts/1-raygen/triangle_intersect.h"
+#include "app/accel/sheared_triangle.h"
+#include "app/accel/triangle4.h"
+#include "framework/math/float_error.h"
+#include "framework/sampling/rng.h"
+#include "framework/sampling/warp.h"
 
 namespace pt {
 namespace {

@@ -8,8 +8,8 @@
 #include <cmath>
 #include <cstdint>
 
-#include "accel/box4.h"
-#include "accel/sheared_triangle.h"
+#include "app/accel/box4.h"
+#include "app/accel/sheared_triangle.h"
 
 namespace pt {
 

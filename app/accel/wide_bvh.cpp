@@ -1,5 +1,5 @@
 // SOLUTION-ONLY FILE: not in the student handout, since it holds complete Part 1 and Part 2 answers.
-#include "accel/wide_bvh.h"
+#include "app/accel/wide_bvh.h"
 
 #include <algorithm>
 #include <chrono>
@@ -15,8 +15,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "1-raygen/scene_intersect.h"
-#include "accel/sheared_triangle.h"
+#include "pipeline/1-raygen/scene_intersect.h"
+#include "app/accel/sheared_triangle.h"
 
 namespace pt {
 

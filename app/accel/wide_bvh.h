@@ -8,11 +8,11 @@
 
 #include <glm/vec3.hpp>
 
-#include "2-bvh/bvh.h"
-#include "accel/box4.h"
-#include "accel/triangle4.h"
-#include "geometry/ray_query.h"
-#include "scene/scene.h"
+#include "parts/2-bvh/bvh.h"
+#include "app/accel/box4.h"
+#include "app/accel/triangle4.h"
+#include "framework/geometry/ray_query.h"
+#include "framework/scene/scene.h"
 
 namespace pt {
 

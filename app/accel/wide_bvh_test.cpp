@@ -10,11 +10,11 @@
 #include <glm/gtc/constants.hpp>
 #include <gtest/gtest.h>
 
-#include "1-raygen/pixel_loop.h"
-#include "2-bvh/tests/bvh_check.h"
-#include "2-bvh/tests/bvh_test_inputs.h"
-#include "1-raygen/triangle_intersect.h"
-#include "accel/wide_bvh.h"
+#include "parts/1-raygen/pixel_loop.h"
+#include "parts/2-bvh/tests/bvh_check.h"
+#include "parts/2-bvh/tests/bvh_test_inputs.h"
+#include "parts/1-raygen/triangle_intersect.h"
+#include "app/accel/wide_bvh.h"
 
 namespace pt {
 namespace {

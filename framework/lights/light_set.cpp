@@ -1,4 +1,4 @@
-#include "lights/light_set.h"
+#include "framework/lights/light_set.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,9 +7,9 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "math/float_error.h"
-#include "math/frame.h"
-#include "sampling/warp.h"
+#include "framework/math/float_error.h"
+#include "framework/math/frame.h"
+#include "framework/sampling/warp.h"
 
 namespace pt {
 namespace {

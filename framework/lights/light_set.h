@@ -28,12 +28,12 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
-#include "geometry/ray_query.h"
-#include "geometry/surface_hit.h"
-#include "lights/environment_map.h"
-#include "math/ray.h"
-#include "sampling/distribution.h"
-#include "scene/scene.h"
+#include "framework/geometry/ray_query.h"
+#include "framework/geometry/surface_hit.h"
+#include "framework/lights/environment_map.h"
+#include "framework/math/ray.h"
+#include "framework/sampling/distribution.h"
+#include "framework/scene/scene.h"
 
 namespace pt {
 

@@ -1,12 +1,12 @@
 // The convergence table is read from CSV or JSON and plotted on log-log axes: each strategy is
 // a line whose points sit where their values say, and bad rows are reported at their line.
-#include "plot/convergence_plot.h"
+#include "framework/plot/convergence_plot.h"
 
 #include <gtest/gtest.h>
 
 #include <regex>
 
-#include "test_folder.h"
+#include "website/tests/test_folder.h"
 
 using pt::ConvergenceRow;
 using pt::PlotAxis;

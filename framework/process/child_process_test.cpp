@@ -1,5 +1,5 @@
 // A child that crashes, hangs or floods its output is reported as such, and the grader goes on.
-#include "child_process.h"
+#include "framework/process/child_process.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "render/film.h"
+#include "framework/render/film.h"
 
 #include <algorithm>
 

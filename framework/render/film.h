@@ -3,9 +3,9 @@
 
 #include <vector>
 
-#include "image/image.h"
-#include "render/pixel_stats.h"
-#include "stats/block_ttest.h"
+#include "framework/image/image.h"
+#include "framework/render/pixel_stats.h"
+#include "framework/stats/block_ttest.h"
 
 namespace pt {
 

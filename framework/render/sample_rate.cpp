@@ -1,4 +1,4 @@
-#include "image/sample_rate.h"
+#include "framework/render/sample_rate.h"
 
 #include <algorithm>
 #include <cmath>

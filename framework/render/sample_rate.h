@@ -1,8 +1,8 @@
 // The sample-rate image of an adaptive render: how many samples each pixel took, as colour.
 #pragma once
 
-#include "image/image.h"
-#include "render/film.h"
+#include "framework/image/image.h"
+#include "framework/render/film.h"
 
 namespace pt {
 

@@ -1,7 +1,7 @@
 // The sample-rate image shows exactly the samples each pixel took.
 #include <gtest/gtest.h>
 
-#include "image/sample_rate.h"
+#include "framework/render/sample_rate.h"
 
 namespace pt {
 namespace {

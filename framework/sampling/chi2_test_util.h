@@ -18,8 +18,8 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include "math/frame.h"
-#include "sampling/rng.h"
+#include "framework/math/frame.h"
+#include "framework/sampling/rng.h"
 
 namespace pt {
 

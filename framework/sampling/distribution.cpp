@@ -1,4 +1,4 @@
-#include "sampling/distribution.h"
+#include "framework/sampling/distribution.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,12 +4,12 @@
 
 #include <cmath>
 
-#include "3-direct/diffuse_bsdf.h"
-#include "3-direct/tests/test_scenes.h"
-#include "bsdf/specular.h"
-#include "lights/light_set.h"
-#include "sampling/chi2_test_util.h"
-#include "sampling/warp.h"
+#include "parts/3-direct/diffuse_bsdf.h"
+#include "framework/testing/test_scenes.h"
+#include "framework/bsdf/specular.h"
+#include "framework/lights/light_set.h"
+#include "framework/sampling/chi2_test_util.h"
+#include "framework/sampling/warp.h"
 
 namespace pt {
 namespace {

@@ -2,14 +2,14 @@
 // and a surface point made ready for shading (its frame, the direction to the viewer, its BSDF).
 #pragma once
 
-#include "3-direct/diffuse_bsdf.h"
-#include "bsdf/specular.h"
-#include "geometry/ray_query.h"
-#include "geometry/surface_hit.h"
-#include "lights/light_set.h"
-#include "math/frame.h"
-#include "math/ray.h"
-#include "scene/scene.h"
+#include "parts/3-direct/diffuse_bsdf.h"
+#include "framework/bsdf/specular.h"
+#include "framework/geometry/ray_query.h"
+#include "framework/geometry/surface_hit.h"
+#include "framework/lights/light_set.h"
+#include "framework/math/frame.h"
+#include "framework/math/ray.h"
+#include "framework/scene/scene.h"
 
 namespace pt {
 

@@ -4,11 +4,11 @@
 #include <functional>
 #include <vector>
 
-#include "3-direct/shading_point.h"
-#include "3-direct/tests/test_scenes.h"
-#include "lights/light_set.h"
-#include "sampling/rng.h"
-#include "sampling/warp.h"
+#include "parts/3-direct/direct_lighting.h"
+#include "framework/testing/test_scenes.h"
+#include "framework/lights/light_set.h"
+#include "framework/sampling/rng.h"
+#include "framework/sampling/warp.h"
 
 namespace pt::test {
 

@@ -9,10 +9,10 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
-#include "geometry/ray_query.h"
-#include "math/float_error.h"
-#include "render/pixel_stats.h"
-#include "scene/scene.h"
+#include "framework/geometry/ray_query.h"
+#include "framework/math/float_error.h"
+#include "framework/render/pixel_stats.h"
+#include "framework/scene/scene.h"
 
 namespace pt::test {
 

@@ -1,4 +1,4 @@
-#include "1-raygen/camera_ray.h"
+#include "parts/1-raygen/camera_ray.h"
 
 #include <cmath>
 #include <limits>
@@ -7,7 +7,7 @@
 #include <glm/gtc/constants.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "student/todo.h"
+#include "framework/student/todo.h"
 
 namespace pt {
 

@@ -3,8 +3,8 @@
 
 #include <glm/vec2.hpp>
 
-#include "math/ray.h"
-#include "scene/camera.h"
+#include "framework/math/ray.h"
+#include "framework/scene/camera.h"
 
 namespace pt {
 

@@ -1,7 +1,7 @@
-#include "1-raygen/pixel_loop.h"
+#include "parts/1-raygen/pixel_loop.h"
 
-#include "1-raygen/camera_ray.h"
-#include "student/todo.h"
+#include "parts/1-raygen/camera_ray.h"
+#include "framework/student/todo.h"
 
 namespace pt {
 

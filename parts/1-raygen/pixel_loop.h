@@ -5,10 +5,10 @@
 
 #include <glm/vec3.hpp>
 
-#include "math/ray.h"
-#include "render/pixel_stats.h"
-#include "sampling/rng.h"
-#include "scene/camera.h"
+#include "framework/math/ray.h"
+#include "framework/render/pixel_stats.h"
+#include "framework/sampling/rng.h"
+#include "framework/scene/camera.h"
 
 namespace pt {
 

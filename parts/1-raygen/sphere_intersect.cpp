@@ -1,11 +1,11 @@
-#include "1-raygen/sphere_intersect.h"
+#include "parts/1-raygen/sphere_intersect.h"
 
 #include <cmath>
 #include <utility>
 
 #include <glm/geometric.hpp>
 
-#include "student/todo.h"
+#include "framework/student/todo.h"
 
 namespace pt {
 

@@ -3,8 +3,8 @@
 
 #include <glm/vec3.hpp>
 
-#include "geometry/surface_hit.h"
-#include "math/ray.h"
+#include "framework/geometry/surface_hit.h"
+#include "framework/math/ray.h"
 
 namespace pt {
 

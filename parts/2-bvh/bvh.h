@@ -6,10 +6,10 @@
 
 #include <glm/vec3.hpp>
 
-#include "2-bvh/bvh_split.h"
-#include "2-bvh/ray_box.h"
-#include "geometry/ray_query.h"
-#include "scene/scene.h"
+#include "parts/2-bvh/bvh_split.h"
+#include "parts/2-bvh/ray_box.h"
+#include "framework/geometry/ray_query.h"
+#include "framework/scene/scene.h"
 
 namespace pt {
 

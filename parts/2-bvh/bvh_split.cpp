@@ -1,6 +1,6 @@
-#include "2-bvh/bvh_split.h"
+#include "parts/2-bvh/bvh_split.h"
 
-#include "student/todo.h"
+#include "framework/student/todo.h"
 
 namespace pt {
 

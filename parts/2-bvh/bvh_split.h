@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <limits>
 
-#include "math/bounds.h"
+#include "framework/math/bounds.h"
 
 namespace pt {
 

@@ -3,11 +3,11 @@
 #include <cmath>
 #include <utility>
 
-#include "1-raygen/scene_intersect.h"
-#include "1-raygen/triangle_intersect.h"
-#include "2-bvh/bvh.h"
-#include "math/float_error.h"
-#include "student/todo.h"
+#include "pipeline/1-raygen/scene_intersect.h"
+#include "parts/1-raygen/triangle_intersect.h"
+#include "parts/2-bvh/bvh.h"
+#include "framework/math/float_error.h"
+#include "framework/student/todo.h"
 
 namespace pt {
 

@@ -1,9 +1,9 @@
-#include "2-bvh/ray_box.h"
+#include "parts/2-bvh/ray_box.h"
 
 #include <cmath>
 
-#include "math/float_error.h"
-#include "student/todo.h"
+#include "framework/math/float_error.h"
+#include "framework/student/todo.h"
 
 namespace pt {
 

@@ -3,9 +3,9 @@
 
 #include <glm/vec3.hpp>
 
-#include "math/bounds.h"
-#include "math/float_error.h"
-#include "math/ray.h"
+#include "framework/math/bounds.h"
+#include "framework/math/float_error.h"
+#include "framework/math/ray.h"
 
 namespace pt {
 

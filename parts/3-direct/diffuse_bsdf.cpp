@@ -1,7 +1,7 @@
-#include "3-direct/diffuse_bsdf.h"
+#include "parts/3-direct/diffuse_bsdf.h"
 
-#include "sampling/warp.h"
-#include "student/todo.h"
+#include "framework/sampling/warp.h"
+#include "framework/student/todo.h"
 
 namespace pt {
 

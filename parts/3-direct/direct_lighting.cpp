@@ -1,9 +1,9 @@
-#include "3-direct/direct_lighting.h"
+#include "parts/3-direct/direct_lighting.h"
 
 #include <algorithm>
 
-#include "sampling/warp.h"
-#include "student/todo.h"
+#include "framework/sampling/warp.h"
+#include "framework/student/todo.h"
 
 namespace pt {
 

@@ -3,8 +3,8 @@
 
 #include <glm/vec3.hpp>
 
-#include "3-direct/shading_point.h"
-#include "sampling/rng.h"
+#include "parts/3-direct/direct_lighting.h"
+#include "framework/sampling/rng.h"
 
 namespace pt {
 

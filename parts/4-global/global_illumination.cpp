@@ -1,11 +1,11 @@
-#include "4-global/global_illumination.h"
+#include "parts/4-global/global_illumination.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "3-direct/direct_lighting.h"
-#include "4-global/mis.h"
-#include "student/todo.h"
+#include "parts/3-direct/direct_lighting.h"
+#include "parts/4-global/mis.h"
+#include "framework/student/todo.h"
 
 namespace pt {
 

@@ -3,9 +3,9 @@
 
 #include <glm/vec3.hpp>
 
-#include "3-direct/shading_point.h"
-#include "math/ray.h"
-#include "sampling/rng.h"
+#include "parts/3-direct/direct_lighting.h"
+#include "framework/math/ray.h"
+#include "framework/sampling/rng.h"
 
 namespace pt {
 

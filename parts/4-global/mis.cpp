@@ -1,9 +1,9 @@
-#include "4-global/mis.h"
+#include "parts/4-global/mis.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "3-direct/direct_lighting.h"
+#include "parts/3-direct/direct_lighting.h"
 
 namespace pt {
 

@@ -1,9 +1,9 @@
-#include "5-adaptive/adaptive_sampling.h"
+#include "parts/5-adaptive/adaptive_sampling.h"
 
 #include <cmath>
 
-#include "1-raygen/camera_ray.h"
-#include "student/todo.h"
+#include "parts/1-raygen/camera_ray.h"
+#include "framework/student/todo.h"
 
 namespace pt {
 

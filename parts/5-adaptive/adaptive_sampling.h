@@ -1,8 +1,8 @@
 // Part 5: per-pixel adaptive sampling — stop taking samples once a pixel has converged.
 #pragma once
 
-#include "1-raygen/pixel_loop.h"
-#include "render/pixel_stats.h"
+#include "parts/1-raygen/pixel_loop.h"
+#include "framework/render/pixel_stats.h"
 
 namespace pt {
 

@@ -1,13 +1,13 @@
-#include "1-raygen/scene_intersect.h"
+#include "pipeline/1-raygen/scene_intersect.h"
 
 #include <cmath>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
-#include "1-raygen/sphere_intersect.h"
-#include "1-raygen/triangle_intersect.h"
-#include "math/float_error.h"
+#include "parts/1-raygen/sphere_intersect.h"
+#include "parts/1-raygen/triangle_intersect.h"
+#include "framework/math/float_error.h"
 
 namespace pt {
 

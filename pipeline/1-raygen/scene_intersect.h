@@ -3,8 +3,8 @@
 
 #include <cstdint>
 
-#include "geometry/ray_query.h"
-#include "scene/scene.h"
+#include "framework/geometry/ray_query.h"
+#include "framework/scene/scene.h"
 
 namespace pt {
 

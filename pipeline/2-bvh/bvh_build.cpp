@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "2-bvh/bvh.h"
+#include "parts/2-bvh/bvh.h"
 
 namespace pt {
 

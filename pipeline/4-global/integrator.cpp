@@ -1,8 +1,8 @@
-#include "4-global/integrator.h"
+#include "pipeline/4-global/integrator.h"
 
 #include <cmath>
 
-#include "4-global/global_illumination.h"
+#include "parts/4-global/global_illumination.h"
 
 namespace pt {
 

@@ -6,13 +6,13 @@
 
 #include <glm/vec3.hpp>
 
-#include "3-direct/shading_point.h"
-#include "geometry/ray_query.h"
-#include "lights/environment_map.h"
-#include "lights/light_set.h"
-#include "render/render_settings.h"
-#include "sampling/rng.h"
-#include "scene/scene.h"
+#include "parts/3-direct/direct_lighting.h"
+#include "framework/geometry/ray_query.h"
+#include "framework/lights/environment_map.h"
+#include "framework/lights/light_set.h"
+#include "framework/render/render_settings.h"
+#include "framework/sampling/rng.h"
+#include "framework/scene/scene.h"
 
 namespace pt {
 

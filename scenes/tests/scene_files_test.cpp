@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "generator/collada_writer.h"
-#include "generator/cornell_scenes.h"
+#include "scenes/generator/collada_writer.h"
+#include "scenes/generator/cornell_scenes.h"
 
 namespace {
 

@@ -1,9 +1,9 @@
-#include "directive.h"
+#include "website/src/directive.h"
 
 #include <algorithm>
 #include <cctype>
 
-#include "plot/xml_text.h"
+#include "framework/text/xml_text.h"
 
 namespace pt::web {
 namespace {

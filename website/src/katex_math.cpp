@@ -1,4 +1,4 @@
-#include "katex_math.h"
+#include "website/src/katex_math.h"
 
 #include <nlohmann/json.hpp>
 
@@ -8,7 +8,7 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "process.h"
+#include "framework/process/child_process.h"
 
 namespace fs = std::filesystem;
 

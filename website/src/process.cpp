@@ -1,4 +1,4 @@
-#include "process.h"
+#include "framework/process/child_process.h"
 
 #include <fcntl.h>
 #include <spawn.h>

@@ -1,4 +1,4 @@
-#include "render_cache.h"
+#include "website/src/render_cache.h"
 
 #include <nlohmann/json.hpp>
 
@@ -8,8 +8,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "directive.h"
-#include "process.h"
+#include "website/src/directive.h"
+#include "framework/process/child_process.h"
 
 namespace fs = std::filesystem;
 

@@ -1,4 +1,4 @@
-#include "site_builder.h"
+#include "website/src/site_builder.h"
 
 #include <cmark.h>
 #include <sys/stat.h>
@@ -11,11 +11,11 @@
 #include <set>
 #include <sstream>
 
-#include "plot/convergence_plot.h"
-#include "directive.h"
-#include "katex_math.h"
-#include "math_spans.h"
-#include "render_cache.h"
+#include "framework/plot/convergence_plot.h"
+#include "website/src/directive.h"
+#include "website/src/katex_math.h"
+#include "website/src/math_spans.h"
+#include "website/src/render_cache.h"
 
 namespace fs = std::filesystem;
 

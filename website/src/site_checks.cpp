@@ -1,4 +1,4 @@
-#include "site_checks.h"
+#include "website/src/site_checks.h"
 
 #include <sys/stat.h>
 

@@ -1,13 +1,13 @@
 // `website build` on small write-ups: images and renders land in the folder, renders come from
 // the cache when nothing changed, and every mistake is reported at its line of the Markdown.
-#include "site_builder.h"
+#include "website/src/site_builder.h"
 
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <sstream>
 
-#include "test_folder.h"
+#include "website/tests/test_folder.h"
 
 namespace fs = std::filesystem;
 using pt::web::BuildOptions;

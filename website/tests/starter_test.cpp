@@ -1,6 +1,6 @@
 // `website init`: the starting write-up has the five parts' sections with the renders each asks
 // for, every scene it names is found, and it builds as it is.
-#include "starter.h"
+#include "website/src/starter.h"
 
 #include <gtest/gtest.h>
 
@@ -8,8 +8,8 @@
 #include <regex>
 #include <sstream>
 
-#include "site_builder.h"
-#include "test_folder.h"
+#include "website/src/site_builder.h"
+#include "website/tests/test_folder.h"
 
 namespace fs = std::filesystem;
 using pt::web::testing::TestFolder;

@@ -10,8 +10,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "child_process.h"
-#include "report.h"
+#include "framework/process/child_process.h"
+#include "grader/report.h"
 
 namespace fs = std::filesystem;
 

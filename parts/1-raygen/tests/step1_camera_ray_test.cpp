@@ -7,7 +7,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "1-raygen/camera_ray.h"
+#include "parts/1-raygen/camera_ray.h"
 
 namespace pt {
 namespace {

@@ -7,8 +7,8 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "1-raygen/camera_ray.h"
-#include "1-raygen/pixel_loop.h"
+#include "parts/1-raygen/camera_ray.h"
+#include "parts/1-raygen/pixel_loop.h"
 
 namespace pt {
 namespace {

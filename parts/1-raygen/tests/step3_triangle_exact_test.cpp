@@ -59,9 +59,9 @@
 
 #include <glm/geometric.hpp>
 
-#include "1-raygen/triangle_intersect.h"
-#include "math/float_error.h"
-#include "sampling/rng.h"
+#include "parts/1-raygen/triangle_intersect.h"
+#include "framework/math/float_error.h"
+#include "framework/sampling/rng.h"
 
 namespace pt {
 namespace {

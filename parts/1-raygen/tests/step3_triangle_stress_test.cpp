@@ -24,8 +24,8 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 
-#include "1-raygen/triangle_intersect.h"
-#include "sampling/rng.h"
+#include "parts/1-raygen/triangle_intersect.h"
+#include "framework/sampling/rng.h"
 
 namespace pt {
 namespace {

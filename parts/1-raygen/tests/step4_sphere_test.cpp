@@ -29,8 +29,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "1-raygen/sphere_intersect.h"
-#include "sampling/rng.h"
+#include "parts/1-raygen/sphere_intersect.h"
+#include "framework/sampling/rng.h"
 
 namespace pt {
 namespace {

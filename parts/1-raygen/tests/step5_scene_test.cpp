@@ -6,8 +6,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "1-raygen/scene_intersect.h"
-#include "sampling/rng.h"
+#include "pipeline/1-raygen/scene_intersect.h"
+#include "framework/sampling/rng.h"
 
 namespace pt {
 namespace {

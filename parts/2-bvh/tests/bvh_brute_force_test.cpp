@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "2-bvh/tests/bvh_check.h"
+#include "parts/2-bvh/tests/bvh_check.h"
 
 namespace pt {
 namespace {

@@ -6,10 +6,10 @@
 
 #include <gtest/gtest.h>
 
-#include "1-raygen/pixel_loop.h"
-#include "2-bvh/tests/bvh_check.h"
-#include "2-bvh/tests/bvh_test_inputs.h"
-#include "rays/ray_set.h"
+#include "parts/1-raygen/pixel_loop.h"
+#include "parts/2-bvh/tests/bvh_check.h"
+#include "parts/2-bvh/tests/bvh_test_inputs.h"
+#include "framework/rays/ray_set.h"
 
 namespace pt {
 namespace {

@@ -9,11 +9,11 @@
 #include <glm/gtc/constants.hpp>
 #include <glm/vec3.hpp>
 
-#include "1-raygen/pixel_loop.h"
-#include "geometry/ray_query.h"
-#include "render/pixel_stats.h"
-#include "sampling/rng.h"
-#include "scene/scene.h"
+#include "parts/1-raygen/pixel_loop.h"
+#include "framework/geometry/ray_query.h"
+#include "framework/render/pixel_stats.h"
+#include "framework/sampling/rng.h"
+#include "framework/scene/scene.h"
 
 namespace pt::test {
 

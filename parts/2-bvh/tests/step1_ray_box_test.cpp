@@ -4,11 +4,11 @@
 
 #include <gtest/gtest.h>
 
-#include "1-raygen/triangle_intersect.h"
-#include "2-bvh/bvh_split.h"
-#include "2-bvh/ray_box.h"
-#include "sampling/rng.h"
-#include "sampling/warp.h"
+#include "parts/1-raygen/triangle_intersect.h"
+#include "parts/2-bvh/bvh_split.h"
+#include "parts/2-bvh/ray_box.h"
+#include "framework/sampling/rng.h"
+#include "framework/sampling/warp.h"
 
 namespace pt {
 namespace {

@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "2-bvh/tests/bvh_check.h"
-#include "2-bvh/tests/bvh_test_inputs.h"
+#include "parts/2-bvh/tests/bvh_check.h"
+#include "parts/2-bvh/tests/bvh_test_inputs.h"
 
 namespace pt {
 namespace {

@@ -8,8 +8,8 @@
 #include <glm/gtc/constants.hpp>
 #include <gtest/gtest.h>
 
-#include "2-bvh/tests/bvh_check.h"
-#include "2-bvh/tests/bvh_test_inputs.h"
+#include "parts/2-bvh/tests/bvh_check.h"
+#include "parts/2-bvh/tests/bvh_test_inputs.h"
 
 namespace pt {
 namespace {

@@ -4,10 +4,10 @@
 
 #include <cmath>
 
-#include "3-direct/direct_lighting.h"
-#include "3-direct/tests/lighting_harness.h"
-#include "render/pixel_stats.h"
-#include "stats/block_ttest.h"
+#include "parts/3-direct/direct_lighting.h"
+#include "framework/testing/lighting_rig.h"
+#include "framework/render/pixel_stats.h"
+#include "framework/stats/block_ttest.h"
 
 namespace pt {
 namespace {

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "3-direct/tests/lighting_harness.h"
-#include "4-global/global_illumination.h"
+#include "framework/testing/lighting_rig.h"
+#include "parts/4-global/global_illumination.h"
 
 namespace pt {
 namespace {

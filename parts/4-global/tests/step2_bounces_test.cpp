@@ -4,9 +4,9 @@
 
 #include <cmath>
 
-#include "3-direct/tests/lighting_harness.h"
-#include "4-global/global_illumination.h"
-#include "4-global/integrator.h"
+#include "framework/testing/lighting_rig.h"
+#include "parts/4-global/global_illumination.h"
+#include "pipeline/4-global/integrator.h"
 
 namespace pt {
 namespace {

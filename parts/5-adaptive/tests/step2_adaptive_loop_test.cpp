@@ -8,11 +8,11 @@
 
 #include <gtest/gtest.h>
 
-#include "5-adaptive/adaptive_sampling.h"
-#include "image/sample_rate.h"
-#include "render/film.h"
-#include "render/tile_renderer.h"
-#include "stats/block_ttest.h"
+#include "parts/5-adaptive/adaptive_sampling.h"
+#include "framework/render/sample_rate.h"
+#include "framework/render/film.h"
+#include "framework/render/tile_renderer.h"
+#include "framework/stats/block_ttest.h"
 
 namespace pt {
 namespace {
