@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "framework/stats/block_ttest.h"
+#include "framework/image/render_estimate.h"
 
 namespace pt {
 

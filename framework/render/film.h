@@ -4,8 +4,8 @@
 #include <vector>
 
 #include "framework/image/image.h"
+#include "framework/image/render_estimate.h"
 #include "framework/render/pixel_stats.h"
-#include "framework/stats/block_ttest.h"
 
 namespace pt {
 

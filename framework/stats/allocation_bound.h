@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "framework/image/image.h"
-#include "framework/stats/block_ttest.h"
+#include "framework/image/render_estimate.h"
 #include "framework/stats/image_error.h"
 
 namespace pt {
