@@ -9,10 +9,10 @@
 
 #include <pugixml.hpp>
 
-#include "framework/process/child_process.h"
-#include "grader/compare.h"
 #include "framework/image/estimate_exr.h"
 #include "framework/image/image.h"
+#include "framework/process/child_process.h"
+#include "grader/compare.h"
 
 namespace fs = std::filesystem;
 

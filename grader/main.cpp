@@ -60,7 +60,7 @@ int main(int argc, char** argv) {
   options.build = !no_build;
   options.run_tests = !no_tests;
   if (options.pathtracer.empty())
-    options.pathtracer = (fs::path(options.build_dir) / "framework" / "app" / "pathtracer").string();
+    options.pathtracer = (fs::path(options.build_dir) / "app" / "pathtracer").string();
 
   Manifest manifest;
   try {

@@ -6,14 +6,14 @@
 
 #include <regex>
 
-#include "website/tests/test_folder.h"
+#include "framework/testing/temp_folder.h"
 
 using pt::ConvergenceRow;
 using pt::PlotAxis;
 using pt::PlotError;
 using pt::convergence_svg;
 using pt::read_convergence_table;
-using pt::web::testing::TestFolder;
+using pt::test::TempFolder;
 
 namespace {
 
@@ -29,8 +29,8 @@ std::vector<std::pair<double, double>> points(const std::string& svg_group) {
 
 }  // namespace
 
-TEST(WebsitePlot, ReadsCsvInAnyColumnOrderAndJson) {
-  TestFolder dir;
+TEST(FrameworkPlot, ReadsCsvInAnyColumnOrderAndJson) {
+  TempFolder dir;
   auto csv = dir.write("t.csv", "seconds,strategy,relMSE,samples\n0.5,uniform,0.1,4\n");
   auto rows = read_convergence_table(csv);
   ASSERT_EQ(rows.size(), 1u);
@@ -46,8 +46,8 @@ TEST(WebsitePlot, ReadsCsvInAnyColumnOrderAndJson) {
   EXPECT_DOUBLE_EQ(rows[0].rel_mse, 0.01);
 }
 
-TEST(WebsitePlot, BadRowsAreReportedWithFileAndLine) {
-  TestFolder dir;
+TEST(FrameworkPlot, BadRowsAreReportedWithFileAndLine) {
+  TempFolder dir;
   auto csv = dir.write("t.csv", "strategy,samples,seconds,relMSE\na,1,1,0.1\na,2,fast,0.1\n");
   try {
     read_convergence_table(csv);
@@ -65,7 +65,7 @@ TEST(WebsitePlot, BadRowsAreReportedWithFileAndLine) {
   }
 }
 
-TEST(WebsitePlot, EachStrategyIsALineWithPointsWhereTheValuesAre) {
+TEST(FrameworkPlot, EachStrategyIsALineWithPointsWhereTheValuesAre) {
   std::vector<ConvergenceRow> rows = {{"uniform", 16, 10, 0.001, 4}, {"uniform", 1, 0.1, 0.1, 2},
                                       {"uniform", 4, 1, 0.01, 3}, {"adaptive", 1, 0.1, 0.05, 5},
                                       {"adaptive", 4, 1, 0.005, 6}};

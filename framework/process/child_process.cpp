@@ -17,7 +17,40 @@
 
 extern char** environ;
 
-namespace pt::grader {
+namespace pt {
+namespace {
+
+/// A temporary file for a child's output, removed when the run is over. Output goes to files
+/// rather than pipes: nothing to drain while we wait, and a child that floods its output only
+/// grows a file that we read the head of.
+struct OutputFile {
+  std::string path;
+  int fd = -1;
+  OutputFile() {
+    std::string tmpl = (std::filesystem::temp_directory_path() / "pt-child-XXXXXX").string();
+    fd = mkstemp(tmpl.data());
+    if (fd >= 0) path = tmpl;
+  }
+  ~OutputFile() {
+    if (fd >= 0) close(fd);
+    if (!path.empty()) std::remove(path.c_str());
+  }
+  OutputFile(const OutputFile&) = delete;
+  OutputFile& operator=(const OutputFile&) = delete;
+
+  /// Its first `max_output` bytes, with a mark where the rest was cut.
+  std::string head(size_t max_output) const {
+    std::ifstream in(path, std::ios::binary);
+    std::string text(max_output, '\0');
+    in.read(text.data(), std::streamsize(max_output));
+    text.resize(size_t(in.gcount()));
+    std::error_code ec;
+    if (std::filesystem::file_size(path, ec) > max_output) text += "\n[... output cut ...]\n";
+    return text;
+  }
+};
+
+}  // namespace
 
 std::string ChildResult::describe() const {
   if (!started) return "could not be started";
@@ -47,21 +80,21 @@ std::string command_line(const std::vector<std::string>& argv) {
 }
 
 ChildResult run_child(const std::vector<std::string>& argv, double timeout_seconds,
-                      const std::string& working_dir, size_t max_output) {
+                      const std::string& working_dir, size_t max_output, ChildStreams streams) {
   ChildResult result;
-  // Output goes to a temporary file rather than a pipe: nothing to drain while we wait, and a
-  // child that floods its output only grows a file that we read the head of.
-  char path[] = "/tmp/pt-grader-child-XXXXXX";
-  int fd = mkstemp(path);
-  if (fd < 0 || argv.empty()) {
+  const bool separate = streams == ChildStreams::separate;
+  OutputFile out, err;
+  if (out.fd < 0 || (separate && err.fd < 0) || argv.empty()) {
     result.started = false;
-    result.output = "cannot create a temporary file for the child's output";
+    result.errors = argv.empty() ? "no program to run"
+                                 : "cannot create a temporary file for the child's output";
+    result.output = result.errors;
     return result;
   }
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_adddup2(&actions, fd, 1);
-  posix_spawn_file_actions_adddup2(&actions, fd, 2);
+  posix_spawn_file_actions_adddup2(&actions, out.fd, 1);
+  posix_spawn_file_actions_adddup2(&actions, separate ? err.fd : out.fd, 2);
   posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
   posix_spawnattr_t attr;
   posix_spawnattr_init(&attr);
@@ -89,14 +122,13 @@ ChildResult run_child(const std::vector<std::string>& argv, double timeout_secon
 
   auto start = std::chrono::steady_clock::now();
   pid_t pid = 0;
-  int err = posix_spawnp(&pid, use[0], &actions, &attr, use, environ);
+  int spawn_error = posix_spawnp(&pid, use[0], &actions, &attr, use, environ);
   posix_spawn_file_actions_destroy(&actions);
   posix_spawnattr_destroy(&attr);
-  if (err != 0) {
-    close(fd);
-    std::remove(path);
+  if (spawn_error != 0) {
     result.started = false;
-    result.output = std::string("cannot run ") + argv[0] + ": " + std::strerror(err);
+    result.errors = std::string("cannot run ") + argv[0] + ": " + std::strerror(spawn_error);
+    result.output = result.errors;
     return result;
   }
   int status = 0;
@@ -124,14 +156,21 @@ ChildResult run_child(const std::vector<std::string>& argv, double timeout_secon
     if (WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
     if (WIFSIGNALED(status)) result.signal = WTERMSIG(status);
   }
-  close(fd);
-  std::ifstream in(path, std::ios::binary);
-  result.output.resize(max_output);
-  in.read(result.output.data(), std::streamsize(max_output));
-  result.output.resize(size_t(in.gcount()));
-  if (std::filesystem::file_size(path) > max_output) result.output += "\n[... output cut ...]\n";
-  std::remove(path);
+  result.output = out.head(max_output);
+  if (separate) result.errors = err.head(max_output);
   return result;
 }
 
-}  // namespace pt::grader
+std::string tail_lines(const std::string& text, int lines) {
+  std::vector<std::string> all;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    if (!line.empty()) all.push_back(line);
+  }
+  std::string joined;
+  size_t first = all.size() > static_cast<size_t>(lines) ? all.size() - lines : 0;
+  for (size_t i = first; i < all.size(); ++i) joined += (i > first ? "\n" : "") + all[i];
+  return joined;
+}
+
+}  // namespace pt

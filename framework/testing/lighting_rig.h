@@ -1,14 +1,15 @@
-// Helpers the Part 3 and 4 lighting tests share: sampling a radiance estimator many times.
+// What the lighting tests (Parts 3 and 4, the framework's lights) share: a scene with its own ray
+// query, lights and LightingContext, and a radiance estimator sampled many times.
 #pragma once
 
 #include <functional>
 #include <vector>
 
-#include "parts/3-direct/direct_lighting.h"
-#include "framework/testing/test_scenes.h"
 #include "framework/lights/light_set.h"
 #include "framework/sampling/rng.h"
 #include "framework/sampling/warp.h"
+#include "framework/shading/lighting_context.h"
+#include "framework/testing/test_scenes.h"
 
 namespace pt::test {
 

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cctype>
 
-#include "framework/text/xml_text.h"
 
 namespace pt::web {
 namespace {
@@ -110,7 +109,5 @@ std::string merge_flags(const std::string& base, const std::string& extra) {
   }
   return out;
 }
-
-std::string html_escape(const std::string& text) { return xml_escape(text); }
 
 }  // namespace pt::web
