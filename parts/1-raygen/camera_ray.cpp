@@ -1,3 +1,4 @@
+// Part 1, step 1 (camera_ray): generate_camera_ray.
 #include "parts/1-raygen/camera_ray.h"
 
 #include <cmath>

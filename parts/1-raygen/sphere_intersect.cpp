@@ -1,3 +1,4 @@
+// Part 1, step 4 (sphere): intersect_sphere.
 #include "parts/1-raygen/sphere_intersect.h"
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// Part 1, step 3: where a ray meets a sphere, with a quadratic that does not cancel.
+// Part 1, step 4 (sphere): where a ray meets a sphere, with a quadratic that does not cancel.
 #pragma once
 
 #include "framework/math/ray.h"

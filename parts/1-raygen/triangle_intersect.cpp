@@ -1,3 +1,4 @@
+// Part 1, step 3 (triangle): intersect_triangle, interpolate_normal.
 #include "parts/1-raygen/triangle_intersect.h"
 
 #include <algorithm>

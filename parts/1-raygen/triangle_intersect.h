@@ -1,4 +1,5 @@
-// Part 1, step 2: where a ray meets a triangle, watertight.
+// Part 1, step 3 (triangle): where a ray meets a triangle, watertight, and the shading normal
+// at the hit.
 #pragma once
 
 #include <glm/vec3.hpp>

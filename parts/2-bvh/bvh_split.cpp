@@ -1,3 +1,4 @@
+// Part 2, step 2 (split): midpoint_split, best_sah_split.
 #include "parts/2-bvh/bvh_split.h"
 
 #include "framework/student/todo.h"

@@ -1,3 +1,4 @@
+// Part 2, step 1 (ray_box): intersect_box.
 #include "parts/2-bvh/ray_box.h"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// Part 3, step 1 (diffuse_bsdf): DiffuseBsdf::f, DiffuseBsdf::sample_f.
 #include "parts/3-direct/diffuse_bsdf.h"
 
 #include "framework/sampling/warp.h"

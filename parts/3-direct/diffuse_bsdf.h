@@ -1,4 +1,5 @@
-// Part 3, step 1: the diffuse (Lambertian) BSDF, which scatters light equally in every direction.
+// Part 3, step 1 (diffuse_bsdf): the diffuse (Lambertian) BSDF, which scatters light equally in
+// every direction.
 #pragma once
 
 #include <glm/vec3.hpp>

@@ -5,9 +5,9 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "framework/math/float_error.h"
 #include "parts/1-raygen/sphere_intersect.h"
 #include "parts/1-raygen/triangle_intersect.h"
-#include "framework/math/float_error.h"
 
 namespace pt {
 

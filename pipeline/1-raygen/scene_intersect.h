@@ -1,4 +1,6 @@
-// Part 1's plumbing: primitives of a Scene intersected one by one (brute force).
+// Given code on Part 1: a primitive of a Scene intersected by the student's tests, with its full
+// SurfaceHit (point, error bound, normals, material), and every primitive tested one by one
+// (brute force, the yardstick the BVH is checked by).
 #pragma once
 
 #include <cstdint>

@@ -1,11 +1,13 @@
-// BVH construction: the plumbing around the student's split choices (binning, the leaf-or-split
-// decision, partitioning, flattening, statistics).
+// Given code on Part 2: BVH construction, the plumbing around the student's split choices
+// (binning, the leaf-or-split decision, partitioning, flattening, statistics).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "parts/2-bvh/bvh.h"
 
@@ -61,18 +63,10 @@ class BvhBuilder {
     bvh_.nodes_.reserve(2 * size_t(n) - 1);
     build_node(0, n, 0);
 
-    // The primitive order and the corner copies, in leaf order.
-    bvh_.order_.resize(n);
-    bvh_.corners_.resize(n);
-    for (uint32_t i = 0; i < n; ++i) {
-      const uint32_t p = refs_[i].primitive;
-      bvh_.order_[i] = p;
-      if (scene.is_triangle(p)) {
-        const Triangle& t = scene.triangles[p];
-        bvh_.corners_[i] = {scene.positions[t.v[0]], scene.positions[t.v[1]],
-                            scene.positions[t.v[2]]};
-      }
-    }
+    // The primitive order, and with it the corner copies, in leaf order.
+    std::vector<uint32_t> order(n);
+    for (uint32_t i = 0; i < n; ++i) order[i] = refs_[i].primitive;
+    bvh_.leaves_ = LeafPrimitives(scene, std::move(order));
   }
 
  private:

@@ -1,8 +1,10 @@
 #include "pipeline/4-global/integrator.h"
 
-#include <cmath>
+#include <algorithm>
 
+#include "framework/render/normal_shading.h"
 #include "parts/4-global/global_illumination.h"
+#include "pipeline/3-direct/direct_integrator.h"
 
 namespace pt {
 
@@ -23,20 +25,14 @@ std::unique_ptr<Integrator> Integrator::create(const RenderSettings& settings, c
   c.russian_roulette = settings.russian_roulette;
   c.only_bounce = settings.only_bounce;
   in->normals_ = settings.shading == ShadingMode::normals || in->lights_->empty();
+  in->direct_only_ = c.max_depth <= 1 && !c.mis;
   return in;
 }
 
 glm::vec3 Integrator::radiance(const Ray& ray, Rng& rng) const {
   if (normals_) return normal_shading(ctx_->query, ray);
+  if (direct_only_) return estimate_direct_illumination(*ctx_, ray, rng);
   return estimate_global_illumination(*ctx_, ray, rng);
-}
-
-glm::vec3 normal_shading(const RayQuery& query, const Ray& ray) {
-  SurfaceHit hit;
-  if (!query.intersect(ray, &hit)) return glm::vec3(0.0f);
-  glm::vec3 n = hit.n;
-  if (!std::isfinite(n.x + n.y + n.z)) return glm::vec3(0.0f);
-  return 0.5f * (n + glm::vec3(1.0f));
 }
 
 }  // namespace pt
