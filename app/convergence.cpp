@@ -16,9 +16,12 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "app/accelerator.h"
+#include "app/pixel_function.h"
+#include "app/radiance.h"
+#include "app/render_job.h"
 #include "framework/plot/convergence_plot.h"
 #include "framework/render/film.h"
-#include "app/render_job.h"
 #include "framework/scene/camera_placement.h"
 #include "framework/scene/collada_loader.h"
 #include "framework/stats/image_error.h"

@@ -8,13 +8,16 @@
 #include <string>
 #include <vector>
 
+#include "app/accelerator.h"
 #include "app/command_line.h"
+#include "app/pixel_function.h"
+#include "app/radiance.h"
 #include "app/render_job.h"
 #include "framework/image/estimate_exr.h"
 #include "framework/image/image.h"
-#include "framework/render/sample_rate.h"
 #include "framework/render/film.h"
 #include "framework/render/progress.h"
+#include "framework/render/sample_rate.h"
 #include "framework/render/tile_renderer.h"
 #include "framework/scene/camera_placement.h"
 #include "framework/scene/collada_loader.h"

@@ -15,8 +15,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "pipeline/1-raygen/scene_intersect.h"
 #include "app/accel/sheared_triangle.h"
+#include "pipeline/1-raygen/scene_intersect.h"
 
 namespace pt {
 
@@ -345,7 +345,7 @@ void WideBvh::find_nearest(const Ray& ray, Nearest* best) const {
   const ShearedRay4 sheared4(ray);
   const ShearedRay& sheared = sheared4.r;
   const Box4Ray box_ray(ray);
-  // What boxes and triangles are culled by: the best t stretched by Part 2's kHitDistanceSlack, so
+  // What boxes and triangles are culled by: the best t stretched by kHitDistanceSlack, so
   // a rival an ulp nearer in another leaf is still compared; primitives are judged on their t.
   // A hit at a tiny t (a ray leaving a surface) can be off by far more than that relative slack:
   // the bound then also covers twice the winner's own error bound on t, since a rival reporting

@@ -8,11 +8,11 @@
 
 #include <glm/vec3.hpp>
 
-#include "parts/2-bvh/bvh.h"
 #include "app/accel/box4.h"
 #include "app/accel/triangle4.h"
 #include "framework/geometry/ray_query.h"
 #include "framework/scene/scene.h"
+#include "parts/2-bvh/bvh.h"
 
 namespace pt {
 
