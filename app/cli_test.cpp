@@ -71,7 +71,7 @@ class CliTest : public ::testing::Test {
 
   /// Runs the pathtracer with `args` (shell words) in the temporary folder.
   Outcome pathtracer(const std::string& args) const {
-    const std::string binary = std::string(PT_BINARY_DIR) + "/framework/app/pathtracer";
+    const std::string binary = PT_PATHTRACER;
     const std::string err_file = file("stderr.txt");
     std::string command = "cd " + quote(dir_.string()) + " && " + quote(binary) + " " + args +
                           " 2>" + quote(err_file);

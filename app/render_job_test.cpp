@@ -1,6 +1,8 @@
 // render_job: the rays a render reports are every ray it traced, not only the camera's.
 #include "app/render_job.h"
 
+#include "app/accelerator.h"
+
 #include <gtest/gtest.h>
 
 #include "framework/geometry/counting_ray_query.h"

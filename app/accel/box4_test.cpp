@@ -8,11 +8,11 @@
 
 #include <gtest/gtest.h>
 
-#include "parts/2-bvh/ray_box.h"
 #include "app/accel/box4.h"
 #include "framework/math/float_error.h"
 #include "framework/sampling/rng.h"
 #include "framework/sampling/warp.h"
+#include "parts/2-bvh/ray_box.h"
 
 namespace pt {
 namespace {
@@ -38,7 +38,7 @@ Bounds3 random_box(Rng& rng, const glm::vec3& o) {
   return b;
 }
 
-TEST(FrameworkAccelBox4, EachLaneAnswersAsPart2) {
+TEST(AccelBox4, EachLaneAnswersAsPart2) {
   Rng rng(77);
   size_t lanes = 0, hits = 0, differ = 0, more_conservative = 0;
   std::string first;
@@ -93,7 +93,7 @@ TEST(FrameworkAccelBox4, EachLaneAnswersAsPart2) {
               more_conservative);
 }
 
-TEST(FrameworkAccelBox4, EmptySlotIsNeverMet) {
+TEST(AccelBox4, EmptySlotIsNeverMet) {
   Rng rng(3);
   Box4 box4;
   for (int k = 0; k < 4; ++k)

@@ -11,12 +11,12 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "parts/1-raygen/triangle_intersect.h"
 #include "app/accel/sheared_triangle.h"
 #include "app/accel/triangle4.h"
 #include "framework/math/float_error.h"
 #include "framework/sampling/rng.h"
 #include "framework/sampling/warp.h"
+#include "parts/1-raygen/triangle_intersect.h"
 
 namespace pt {
 namespace {
@@ -94,7 +94,7 @@ void compare(const Ray& ray, const glm::vec3& p0, const glm::vec3& p1, const glm
                    " t=" + std::to_string(got.t);
 }
 
-TEST(FrameworkAccelTriangle, BitIdenticalToPart1OnMillionsOfRays) {
+TEST(AccelTriangle, BitIdenticalToPart1OnMillionsOfRays) {
   Rng rng(1234);
   Tally tally;
   // Scales from tiny to huge, near and far from the origin.
@@ -155,7 +155,7 @@ TEST(FrameworkAccelTriangle, BitIdenticalToPart1OnMillionsOfRays) {
               tally.simd_hits, tally.simd_retests, tally.simd_differ);
 }
 
-TEST(FrameworkAccelTriangle, NonFiniteInputsAnswerAsPart1) {
+TEST(AccelTriangle, NonFiniteInputsAnswerAsPart1) {
   const float inf = std::numeric_limits<float>::infinity(), nan = std::nanf("");
   Tally tally;
   const glm::vec3 p0(-1, -1, 0), p1(1, -1, 0), p2(0, 1, 0);

@@ -10,11 +10,11 @@
 #include <glm/gtc/constants.hpp>
 #include <gtest/gtest.h>
 
+#include "app/accel/wide_bvh.h"
 #include "parts/1-raygen/pixel_loop.h"
+#include "parts/1-raygen/triangle_intersect.h"
 #include "parts/2-bvh/tests/bvh_check.h"
 #include "parts/2-bvh/tests/bvh_test_inputs.h"
-#include "parts/1-raygen/triangle_intersect.h"
-#include "app/accel/wide_bvh.h"
 
 namespace pt {
 namespace {
@@ -74,9 +74,9 @@ void check_scene(const Scene& scene, const Case& c) {
   expect_brute_force_answers(scene, c.split, c.leaf, rays);
 }
 
-class FrameworkWideBvhProjectScene : public testing::TestWithParam<Case> {};
+class WideBvhProjectScene : public testing::TestWithParam<Case> {};
 
-TEST_P(FrameworkWideBvhProjectScene, MatchesBruteForce) {
+TEST_P(WideBvhProjectScene, MatchesBruteForce) {
   Scene scene;
   std::string why;
   if (!test::try_load(std::string(PT_SOURCE_DIR) + "/scenes/" + GetParam().path, &scene, &why))
@@ -85,7 +85,7 @@ TEST_P(FrameworkWideBvhProjectScene, MatchesBruteForce) {
 }
 
 INSTANTIATE_TEST_SUITE_P(
-    Scenes, FrameworkWideBvhProjectScene,
+    Scenes, WideBvhProjectScene,
     testing::Values(Case{"cornell_empty.dae", BvhSplitMethod::sah, 4, kRays},
                     Case{"cornell_spheres.dae", BvhSplitMethod::sah, 4, kRays},
                     Case{"cornell_mirror_glass.dae", BvhSplitMethod::sah, 1, kRays},
@@ -93,9 +93,9 @@ INSTANTIATE_TEST_SUITE_P(
                     Case{"cornell_coil.dae", BvhSplitMethod::median, 1, kRays}),
     case_name);
 
-class FrameworkWideBvhCourseScene : public testing::TestWithParam<Case> {};
+class WideBvhCourseScene : public testing::TestWithParam<Case> {};
 
-TEST_P(FrameworkWideBvhCourseScene, MatchesBruteForce) {
+TEST_P(WideBvhCourseScene, MatchesBruteForce) {
   Scene scene;
   std::string why;
   if (!test::try_load(std::string(PT_SHARED_SCENES_DIR) + "/" + GetParam().path, &scene, &why))
@@ -105,7 +105,7 @@ TEST_P(FrameworkWideBvhCourseScene, MatchesBruteForce) {
 
 // The bunnies (about 30,000 triangles each) get fewer rays: brute force costs a pass a ray.
 INSTANTIATE_TEST_SUITE_P(
-    Scenes, FrameworkWideBvhCourseScene,
+    Scenes, WideBvhCourseScene,
     testing::Values(Case{"sky/CBempty.dae", BvhSplitMethod::sah, 4, kRays},
                     Case{"sky/CBspheres.dae", BvhSplitMethod::sah, 4, kRays},
                     Case{"sky/CBgems.dae", BvhSplitMethod::sah, 4, kRays},
@@ -129,7 +129,7 @@ void expect_degenerate_ok(const Scene& scene, const std::vector<Ray>& extra = {}
   }
 }
 
-TEST(FrameworkWideBvhDegenerate, EmptySceneHasNoNodesAndNoHits) {
+TEST(WideBvhDegenerate, EmptySceneHasNoNodesAndNoHits) {
   const Scene scene;
   const Bvh binary(scene);
   const WideBvh wide(scene, binary);
@@ -139,7 +139,7 @@ TEST(FrameworkWideBvhDegenerate, EmptySceneHasNoNodesAndNoHits) {
   EXPECT_FALSE(wide.occluded(Ray{}));
 }
 
-TEST(FrameworkWideBvhDegenerate, OnePrimitive) {
+TEST(WideBvhDegenerate, OnePrimitive) {
   Scene tri;
   add_triangle(&tri, {-1, -1, 0}, {1, -1, 0}, {0, 1, 0});
   EXPECT_EQ(WideBvh(tri, Bvh(tri)).nodes().size(), 1u);
@@ -149,15 +149,15 @@ TEST(FrameworkWideBvhDegenerate, OnePrimitive) {
   expect_degenerate_ok(sphere);
 }
 
-TEST(FrameworkWideBvhDegenerate, AllCentroidsEqual) {
+TEST(WideBvhDegenerate, AllCentroidsEqual) {
   expect_degenerate_ok(test::centroids_all_equal());
 }
 
-TEST(FrameworkWideBvhDegenerate, FlatBoxesAndRaysInTheirPlane) {
+TEST(WideBvhDegenerate, FlatBoxesAndRaysInTheirPlane) {
   expect_degenerate_ok(test::flat_grid(), test::rays_at_flat_grid(12));
 }
 
-TEST(FrameworkWideBvhDegenerate, DuplicatesTieToTheLowestIndex) {
+TEST(WideBvhDegenerate, DuplicatesTieToTheLowestIndex) {
   const Scene s = test::duplicate_triangles(50);
   const Bvh binary(s, BvhOptions{BvhSplitMethod::sah, 1, 16, {}});
   const WideBvh wide(s, binary);
@@ -169,7 +169,7 @@ TEST(FrameworkWideBvhDegenerate, DuplicatesTieToTheLowestIndex) {
   expect_degenerate_ok(s);
 }
 
-TEST(FrameworkWideBvhDegenerate, UnshadeableWinnerFallsBackToTheNextHit) {
+TEST(WideBvhDegenerate, UnshadeableWinnerFallsBackToTheNextHit) {
   // A triangle 2·10^10 across in front of a small one: the ray test hits it, but its normal's
   // squared length overflows, so Part 1 refuses to shade it and brute force reports the small
   // triangle behind. The wide tree, which shades only its winner, must then look again.
@@ -212,7 +212,7 @@ TEST(FrameworkWideBvhDegenerate, UnshadeableWinnerFallsBackToTheNextHit) {
 
 /// Checks the tree: every leaf-order entry in exactly one leaf whose box holds it, one to four
 /// children a node, unused slots empty, every node the child of exactly one other (or the root).
-TEST(FrameworkWideBvhBuild, TreeIsWellFormed) {
+TEST(WideBvhBuild, TreeIsWellFormed) {
   Scene scene;
   std::string why;
   if (!test::try_load(std::string(PT_SOURCE_DIR) + "/scenes/cornell_coil.dae", &scene, &why))
@@ -274,9 +274,9 @@ TEST(FrameworkWideBvhBuild, TreeIsWellFormed) {
   }
 }
 
-class FrameworkWideBvhRender : public testing::TestWithParam<std::string> {};
+class WideBvhRender : public testing::TestWithParam<std::string> {};
 
-TEST_P(FrameworkWideBvhRender, ImageEqualsBruteForcePixelForPixel) {
+TEST_P(WideBvhRender, ImageEqualsBruteForcePixelForPixel) {
   Scene scene;
   std::string why;
   if (!test::try_load(std::string(PT_SOURCE_DIR) + "/scenes/" + GetParam(), &scene, &why))
@@ -294,7 +294,7 @@ TEST_P(FrameworkWideBvhRender, ImageEqualsBruteForcePixelForPixel) {
   EXPECT_EQ(differ, 0);
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, FrameworkWideBvhRender,
+INSTANTIATE_TEST_SUITE_P(Scenes, WideBvhRender,
                          testing::Values("cornell_spheres.dae", "cornell_coil.dae"),
                          [](const testing::TestParamInfo<std::string>& info) {
                            return info.param.substr(0, info.param.find('.'));

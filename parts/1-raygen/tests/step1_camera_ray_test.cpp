@@ -18,7 +18,7 @@ float angle_between(const glm::vec3& a, const glm::vec3& b) {
 
 // The left and right edge rays span hfov exactly; the bottom and top ones the vertical angle that
 // the image's aspect gives, 2·atan(tan(hfov/2)/aspect).
-TEST(Part1Camera, CornersMatchTheFieldOfView) {
+TEST(camera_ray, corners_match_the_field_of_view) {
   Camera cam;
   cam.hfov_degrees = 60.0f;
   for (float aspect : {1.0f, 4.0f / 3.0f, 0.5f, 2.35f}) {
@@ -50,7 +50,7 @@ TEST(Part1Camera, CornersMatchTheFieldOfView) {
 
 // A rotated, translated camera: rays start at its position and the centre ray looks where the
 // matrix's -z axis points.
-TEST(Part1Camera, CameraToWorldIsApplied) {
+TEST(camera_ray, camera_to_world_is_applied) {
   Camera cam;
   const glm::vec3 eye(3.0f, -2.0f, 7.5f), look_at(-1.0f, 4.0f, 0.5f), up(0.0f, 0.0f, 1.0f);
   cam.camera_to_world = glm::inverse(glm::lookAt(eye, look_at, up));
@@ -66,7 +66,7 @@ TEST(Part1Camera, CameraToWorldIsApplied) {
 
 // Thin lens: rays through one film point from all over the aperture meet on the focal plane at
 // the pinhole ray's point, and start on the lens disk.
-TEST(Part1Camera, ThinLensRaysConvergeOnTheFocalPlane) {
+TEST(camera_ray, thin_lens_rays_converge_on_the_focal_plane) {
   Camera cam;
   cam.lens_radius = 0.25f;
   cam.focal_distance = 4.0f;

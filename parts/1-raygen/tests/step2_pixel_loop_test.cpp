@@ -1,4 +1,5 @@
-// Part 1: the pixel loop — where its rays go and what it adds up.
+// Part 1, step 2 (pixel_loop): a pixel and a point in it to a camera ray; the pixel loop, where
+// its rays go and what it adds up.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -21,7 +22,21 @@ glm::vec2 film_of(const Camera& cam, float aspect, const Ray& r) {
   return {0.5f * (r.d.x / -r.d.z / half_w + 1.0f), 0.5f * (r.d.y / -r.d.z / half_h + 1.0f)};
 }
 
-TEST(Part1PixelLoop, OneSampleGoesThroughThePixelCentre) {
+TEST(pixel_loop, camera_ray_through_pixel_maps_the_offset_to_the_film) {
+  Camera cam;
+  const PixelRef px{7, 2, 20, 10};  // column 7, row 2 from the top
+  for (glm::vec2 offset : {glm::vec2(0.0f), glm::vec2(1.0f), glm::vec2(0.5f), glm::vec2(0.25f, 0.75f)}) {
+    const Ray r = camera_ray_through_pixel(cam, px, offset, {0.5f, 0.5f});
+    const glm::vec2 film((7.0f + offset.x) / 20, 1.0f - (2.0f + offset.y) / 10);
+    const glm::vec2 f = film_of(cam, 2.0f, r);
+    EXPECT_NEAR(f.x, film.x, 1e-5f) << offset.x << "," << offset.y;
+    EXPECT_NEAR(f.y, film.y, 1e-5f) << offset.x << "," << offset.y;
+    const Ray expect = generate_camera_ray(cam, 2.0f, film, {0.5f, 0.5f});
+    EXPECT_NEAR(glm::length(r.d - expect.d), 0.0f, 1e-6f);
+  }
+}
+
+TEST(pixel_loop, one_sample_goes_through_the_pixel_centre) {
   Camera cam;
   const PixelRef px{7, 2, 20, 10};  // column 7, row 2 from the top
   std::vector<Ray> rays;
@@ -41,7 +56,7 @@ TEST(Part1PixelLoop, OneSampleGoesThroughThePixelCentre) {
   EXPECT_EQ(stats.count, 1);
 }
 
-TEST(Part1PixelLoop, JitteredSamplesStayInTheirPixel) {
+TEST(pixel_loop, jittered_samples_stay_in_their_pixel) {
   Camera cam;
   const PixelRef px{3, 5, 8, 6};
   std::vector<glm::vec2> films;
@@ -71,7 +86,7 @@ TEST(Part1PixelLoop, JitteredSamplesStayInTheirPixel) {
   EXPECT_GT(hi.y, y1 - 0.02f / 6);
 }
 
-TEST(Part1PixelLoop, StatsHoldTheAverageOfTheSamples) {
+TEST(pixel_loop, stats_hold_the_average_of_the_samples) {
   Camera cam;
   std::vector<glm::vec3> values;
   int k = 0;

@@ -59,9 +59,9 @@
 
 #include <glm/geometric.hpp>
 
-#include "parts/1-raygen/triangle_intersect.h"
 #include "framework/math/float_error.h"
 #include "framework/sampling/rng.h"
+#include "parts/1-raygen/triangle_intersect.h"
 
 namespace pt {
 namespace {
@@ -314,7 +314,7 @@ Tally run(const char* name, long n, Gen gen) {
   return t;
 }
 
-TEST(Part1Triangle, RandomRaysAgreeWithExactArithmetic) {
+TEST(triangle, random_rays_agree_with_exact_arithmetic) {
   Cases cases(7);
   Tally t = run("random", 100000, [&] { return cases.random(); });
   EXPECT_EQ(t.disagreements, 0);
@@ -324,7 +324,7 @@ TEST(Part1Triangle, RandomRaysAgreeWithExactArithmetic) {
   EXPECT_LT(t.near_edge + t.near_t_end, t.cases / 100);
 }
 
-TEST(Part1Triangle, AdversarialRaysAgreeWithExactArithmetic) {
+TEST(triangle, adversarial_rays_agree_with_exact_arithmetic) {
   Cases cases(11);
   const long n = 12500;
   Tally all;

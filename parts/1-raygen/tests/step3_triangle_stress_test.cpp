@@ -24,8 +24,8 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 
-#include "parts/1-raygen/triangle_intersect.h"
 #include "framework/sampling/rng.h"
+#include "parts/1-raygen/triangle_intersect.h"
 
 namespace pt {
 namespace {
@@ -221,7 +221,7 @@ Count shoot(const Mesh& model, const Placement& place, long rays, uint64_t seed,
   return count;
 }
 
-TEST(Part1Triangle, WatertightSharedEdgesAndVertices) {
+TEST(triangle, watertight_shared_edges_and_vertices) {
   const auto start = std::chrono::steady_clock::now();
   const std::vector<std::pair<const char*, Mesh>> meshes = {
       {"icosphere(4)", icosphere(4)},
@@ -275,7 +275,7 @@ bool moller_trumbore(const Ray& ray, const glm::vec3& p0, const glm::vec3& p1,
 
 // The control: the same rays leak through a test that is not watertight, so the zero above
 // means something.
-TEST(Part1Triangle, NoLeakWhereANonWatertightTestLeaks) {
+TEST(triangle, no_leak_where_a_non_watertight_test_leaks) {
   // The control shows these rays find cracks (so the zero leaks above mean something); the
   // student's test must close every one of them on the very same rays.
   Count control = shoot(icosphere(4), Placement{10.0f, 1e5f}, 200000, 99, moller_trumbore, false);

@@ -29,8 +29,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "parts/1-raygen/sphere_intersect.h"
 #include "framework/sampling/rng.h"
+#include "parts/1-raygen/sphere_intersect.h"
 
 namespace pt {
 namespace {
@@ -135,7 +135,7 @@ Tally run(const char* name, long n, const std::function<std::pair<Ray, Sphere>()
   return t;
 }
 
-TEST(Part1Sphere, RootsMatchLongDoubleReference) {
+TEST(sphere, roots_match_long_double_reference) {
   SphereCases g(5);
   const long n = 40000;
   run("far (1e4, small r)", n, [&] {
@@ -182,7 +182,7 @@ TEST(Part1Sphere, RootsMatchLongDoubleReference) {
 }
 
 // Both roots count, the nearer one inside (tmin, tmax) wins.
-TEST(Part1Sphere, NearestRootInsideTheInterval) {
+TEST(sphere, nearest_root_inside_the_interval) {
   const Sphere s{glm::vec3(0, 0, -10), 2.0f, 0};
   Ray ray;  // from the origin down -z: roots 8 and 12
   float t = 0;

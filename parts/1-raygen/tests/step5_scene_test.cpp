@@ -6,8 +6,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "pipeline/1-raygen/scene_intersect.h"
 #include "framework/sampling/rng.h"
+#include "pipeline/1-raygen/scene_intersect.h"
 
 namespace pt {
 namespace {
@@ -32,7 +32,7 @@ Scene stack() {
   return s;
 }
 
-TEST(Part1Scene, BruteForceFindsTheNearestOfOverlappingPrimitives) {
+TEST(scene, brute_force_finds_the_nearest_of_overlapping_primitives) {
   Scene s = stack();
   BruteForce bf(s);
   SurfaceHit hit;
@@ -62,7 +62,7 @@ TEST(Part1Scene, BruteForceFindsTheNearestOfOverlappingPrimitives) {
   EXPECT_FALSE(bf.intersect(ray, &hit));
 }
 
-TEST(Part1Scene, OcclusionRespectsTheInterval) {
+TEST(scene, occlusion_respects_the_interval) {
   Scene s = stack();
   BruteForce bf(s);
   Ray ray;
@@ -78,7 +78,7 @@ TEST(Part1Scene, OcclusionRespectsTheInterval) {
 }
 
 // The error box around every hit point contains a point of the exact surface (long double).
-TEST(Part1Scene, HitErrorBoundsContainTheExactSurface) {
+TEST(scene, hit_error_bounds_contain_the_exact_surface) {
   Rng rng(23);
   auto uni = [&](float lo, float hi) { return lo + (hi - lo) * rng.next_float(); };
   auto box = [&](float r) { return glm::vec3(uni(-r, r), uni(-r, r), uni(-r, r)); };
@@ -141,7 +141,7 @@ TEST(Part1Scene, HitErrorBoundsContainTheExactSurface) {
   EXPECT_GT(checked_sphere, 5000);
 }
 
-TEST(Part1Scene, NormalsAreInterpolatedAndDecideTheOutside) {
+TEST(scene, normals_are_interpolated_and_decide_the_outside) {
   Scene s;
   // Wound so that its winding normal is -z, but the modeller's normals say +z (tilted).
   const glm::vec3 ns[3] = {glm::normalize(glm::vec3(1, 0, 1)), glm::normalize(glm::vec3(0, 1, 1)),

@@ -9,11 +9,11 @@
 #include <glm/gtc/constants.hpp>
 #include <glm/vec3.hpp>
 
-#include "parts/1-raygen/pixel_loop.h"
 #include "framework/geometry/ray_query.h"
 #include "framework/render/pixel_stats.h"
 #include "framework/sampling/rng.h"
 #include "framework/scene/scene.h"
+#include "parts/1-raygen/pixel_loop.h"
 
 namespace pt::test {
 

@@ -1,14 +1,15 @@
-// Part 2: the ray-box slab test and the split choices, on their own.
+// Part 2, step 1 (ray_box): the conservative ray-box slab test, on known answers, rays along faces
+// and flat boxes, and rays that must never be lost to rounding.
 #include <cmath>
 #include <limits>
 
 #include <gtest/gtest.h>
 
-#include "parts/1-raygen/triangle_intersect.h"
-#include "parts/2-bvh/bvh_split.h"
-#include "parts/2-bvh/ray_box.h"
 #include "framework/sampling/rng.h"
 #include "framework/sampling/warp.h"
+#include "parts/1-raygen/triangle_intersect.h"
+#include "parts/2-bvh/ray_box.h"
+#include "pipeline/1-raygen/nearest_hit_query.h"
 
 namespace pt {
 namespace {
@@ -21,7 +22,7 @@ bool box_hit(const Bounds3& b, glm::vec3 o, glm::vec3 d, float tmin, float tmax,
   return intersect_box(b, BoxRay(r), tmax, t);
 }
 
-TEST(Part2RayBox, KnownAnswers) {
+TEST(ray_box, known_answers) {
   const float inf = std::numeric_limits<float>::infinity();
   float t = -1.0f;
   ASSERT_TRUE(box_hit(kUnit, {-1, 0.5f, 0.5f}, {1, 0, 0}, 0, inf, &t));
@@ -35,7 +36,7 @@ TEST(Part2RayBox, KnownAnswers) {
   EXPECT_FALSE(box_hit(kUnit, {-1, 0.5f, 0.5f}, {1, 0, 0}, 2.5f, inf, &t)); // starts past it
 }
 
-TEST(Part2RayBox, RaysAlongFacesAndFlatBoxesCount) {
+TEST(ray_box, rays_along_faces_and_flat_boxes_count) {
   const float inf = std::numeric_limits<float>::infinity();
   float t;
   // In the plane of a face: 0 times infinity, which must not turn the ray away.
@@ -58,7 +59,7 @@ TEST(Part2RayBox, RaysAlongFacesAndFlatBoxesCount) {
   }
 }
 
-TEST(Part2RayBox, NeverLosesAHitToRounding) {
+TEST(ray_box, never_loses_a_hit_to_rounding) {
   // Rays aimed at points of small triangles far from the origin, axis-aligned ones among them
   // (flat boxes): wherever the triangle is hit at t, its box must be entered by the distance a
   // traversal culls at (t stretched by kHitDistanceSlack, since t itself is rounded).
@@ -87,59 +88,6 @@ TEST(Part2RayBox, NeverLosesAHitToRounding) {
   }
   EXPECT_GT(hits, 100000);
   EXPECT_EQ(lost, 0);
-}
-
-TEST(Part2Split, MidpointCutsTheWidestSpreadInHalf) {
-  const MidpointSplit s = midpoint_split(Bounds3{glm::vec3(0, -4, 1), glm::vec3(1, 2, 2)});
-  EXPECT_EQ(s.axis, 1);
-  EXPECT_FLOAT_EQ(s.position, -1.0f);
-  EXPECT_EQ(midpoint_split(Bounds3{glm::vec3(0), glm::vec3(1, 1, 3)}).axis, 2);
-}
-
-/// The SAH cost of every plane evaluated directly, plane by plane.
-SahSplit naive_sah(const SahBin* bins, int n, float area, const SahCosts& c) {
-  SahSplit best;
-  for (int p = 0; p < n - 1; ++p) {
-    Bounds3 l, r;
-    uint32_t nl = 0, nr = 0;
-    for (int i = 0; i <= p; ++i) l.grow(bins[i].bounds), nl += bins[i].count;
-    for (int i = p + 1; i < n; ++i) r.grow(bins[i].bounds), nr += bins[i].count;
-    if (nl == 0 || nr == 0) continue;
-    const float cost = c.traversal + c.intersection * (l.surface_area() * nl + r.surface_area() * nr) / area;
-    if (cost < best.cost) best = {p, cost};
-  }
-  return best;
-}
-
-TEST(Part2Split, SahSweepAgreesWithPlaneByPlaneCost) {
-  Rng rng(17);
-  const SahCosts costs{1.0f, 2.0f};
-  for (int trial = 0; trial < 2000; ++trial) {
-    const int n = 2 + int(rng.next_u32() % 15);
-    SahBin bins[kMaxSahBins];
-    Bounds3 all;
-    for (int i = 0; i < n; ++i) {
-      if (rng.next_float() < 0.3f) continue;  // empty bins
-      bins[i].count = 1 + rng.next_u32() % 20;
-      const glm::vec3 lo(float(i) + rng.next_float(), rng.next_float(), rng.next_float());
-      bins[i].bounds = Bounds3{lo, lo + glm::vec3(rng.next_float(), rng.next_float(), rng.next_float())};
-      all.grow(bins[i].bounds);
-    }
-    if (all.empty()) continue;
-    const float area = all.surface_area();
-    const SahSplit got = best_sah_split(bins, n, area, costs), want = naive_sah(bins, n, area, costs);
-    ASSERT_EQ(got.plane, want.plane) << "trial " << trial;
-    if (want.plane >= 0) {
-      ASSERT_NEAR(got.cost, want.cost, 1e-4f * want.cost) << "trial " << trial;
-    }
-  }
-}
-
-TEST(Part2Split, SahHasNoSplitWhenOneBinHoldsEverything) {
-  SahBin bins[4];
-  bins[2].count = 7;
-  bins[2].bounds = kUnit;
-  EXPECT_EQ(best_sah_split(bins, 4, kUnit.surface_area(), SahCosts{}).plane, -1);
 }
 
 }  // namespace

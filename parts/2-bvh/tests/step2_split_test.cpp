@@ -1,10 +1,15 @@
-// Part 2: the SAH build's decisions — a node stays a leaf exactly when splitting it does not pay,
-// the size cut separates big primitives from small ones, and the tree records its split axes.
+// Part 2, step 2 (split): the split choices on their own (the midpoint, the SAH sweep), and the
+// build's decisions made with them: a node stays a leaf exactly when splitting it does not pay,
+// the size cut separates big primitives from small ones, the tree records its split axes and is
+// well formed.
+#include <set>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "parts/2-bvh/bvh_split.h"
 #include "parts/2-bvh/tests/bvh_check.h"
 #include "parts/2-bvh/tests/bvh_test_inputs.h"
 
@@ -12,6 +17,8 @@ namespace pt {
 namespace {
 
 using test::add_triangle;
+
+const Bounds3 kUnit{glm::vec3(0.0f), glm::vec3(1.0f)};
 
 BvhOptions options(BvhSplitMethod split, int max_leaf) {
   BvhOptions o;
@@ -32,7 +39,7 @@ Scene stacked_triangles() {
   return s;
 }
 
-TEST(Part2SahBuild, NodeWhoseSplitDoesNotPayStaysALeaf) {
+TEST(split, node_whose_split_does_not_pay_stays_a_leaf) {
   const Scene s = stacked_triangles();
   const Bvh sah(s, options(BvhSplitMethod::sah, 4));
   ASSERT_EQ(sah.nodes().size(), 1u) << "the SAH split a node whose split costs more than a leaf";
@@ -47,7 +54,7 @@ TEST(Part2SahBuild, NodeWhoseSplitDoesNotPayStaysALeaf) {
   EXPECT_EQ(Bvh(s, options(BvhSplitMethod::median, 2)).stats().leaves, 2u);
 }
 
-TEST(Part2SahBuild, NodeWhoseSplitPaysIsSplit) {
+TEST(split, node_whose_split_pays_is_split) {
   // Four small triangles at the corners of a big box: each split leaves boxes a tiny fraction of
   // the node's, so the SAH splits down to single primitives although the cap would allow one
   // leaf of four.
@@ -76,7 +83,7 @@ Scene floor_under_ball(int small) {
   return s;
 }
 
-TEST(Part2SahBuild, BigAndSmallMixedSahCostBelowMidpoint) {
+TEST(split, big_and_small_mixed_sah_cost_below_midpoint) {
   const Scene s = floor_under_ball(5000);
   const Bvh sah(s, options(BvhSplitMethod::sah, 4)), mid(s, options(BvhSplitMethod::median, 4));
   EXPECT_LT(sah.stats().sah_cost, mid.stats().sah_cost);
@@ -96,7 +103,7 @@ TEST(Part2SahBuild, BigAndSmallMixedSahCostBelowMidpoint) {
   EXPECT_GT(r.hits, 0u);
 }
 
-TEST(Part2SahBuild, NodesRecordTheirSplitAxis) {
+TEST(split, nodes_record_their_split_axis) {
   // Two long rows along x, 5 apart in y: the SAH parts the rows (along y), although the
   // centroids spread widest along x, where the midpoint split cuts.
   Scene s;
@@ -110,6 +117,109 @@ TEST(Part2SahBuild, NodesRecordTheirSplitAxis) {
   EXPECT_EQ(sah.nodes()[0].axis, 1) << "the root splits the two rows apart, along y";
   const Bvh mid(s, options(BvhSplitMethod::median, 4));
   EXPECT_EQ(mid.nodes()[0].axis, 0) << "the midpoint split cuts the longest spread, along x";
+}
+
+TEST(split, midpoint_cuts_the_widest_spread_in_half) {
+  const MidpointSplit s = midpoint_split(Bounds3{glm::vec3(0, -4, 1), glm::vec3(1, 2, 2)});
+  EXPECT_EQ(s.axis, 1);
+  EXPECT_FLOAT_EQ(s.position, -1.0f);
+  EXPECT_EQ(midpoint_split(Bounds3{glm::vec3(0), glm::vec3(1, 1, 3)}).axis, 2);
+}
+
+/// The SAH cost of every plane evaluated directly, plane by plane.
+SahSplit naive_sah(const SahBin* bins, int n, float area, const SahCosts& c) {
+  SahSplit best;
+  for (int p = 0; p < n - 1; ++p) {
+    Bounds3 l, r;
+    uint32_t nl = 0, nr = 0;
+    for (int i = 0; i <= p; ++i) l.grow(bins[i].bounds), nl += bins[i].count;
+    for (int i = p + 1; i < n; ++i) r.grow(bins[i].bounds), nr += bins[i].count;
+    if (nl == 0 || nr == 0) continue;
+    const float cost = c.traversal + c.intersection * (l.surface_area() * nl + r.surface_area() * nr) / area;
+    if (cost < best.cost) best = {p, cost};
+  }
+  return best;
+}
+
+TEST(split, sah_sweep_agrees_with_plane_by_plane_cost) {
+  Rng rng(17);
+  const SahCosts costs{1.0f, 2.0f};
+  for (int trial = 0; trial < 2000; ++trial) {
+    const int n = 2 + int(rng.next_u32() % 15);
+    SahBin bins[kMaxSahBins];
+    Bounds3 all;
+    for (int i = 0; i < n; ++i) {
+      if (rng.next_float() < 0.3f) continue;  // empty bins
+      bins[i].count = 1 + rng.next_u32() % 20;
+      const glm::vec3 lo(float(i) + rng.next_float(), rng.next_float(), rng.next_float());
+      bins[i].bounds = Bounds3{lo, lo + glm::vec3(rng.next_float(), rng.next_float(), rng.next_float())};
+      all.grow(bins[i].bounds);
+    }
+    if (all.empty()) continue;
+    const float area = all.surface_area();
+    const SahSplit got = best_sah_split(bins, n, area, costs), want = naive_sah(bins, n, area, costs);
+    ASSERT_EQ(got.plane, want.plane) << "trial " << trial;
+    if (want.plane >= 0) {
+      ASSERT_NEAR(got.cost, want.cost, 1e-4f * want.cost) << "trial " << trial;
+    }
+  }
+}
+
+TEST(split, sah_has_no_split_when_one_bin_holds_everything) {
+  SahBin bins[4];
+  bins[2].count = 7;
+  bins[2].bounds = kUnit;
+  EXPECT_EQ(best_sah_split(bins, 4, kUnit.surface_area(), SahCosts{}).plane, -1);
+}
+
+/// Checks the tree's invariants: every primitive once, boxes nested, leaves within size.
+void expect_well_formed(const Scene& scene, const Bvh& bvh, int leaf) {
+  const auto& nodes = bvh.nodes();
+  std::multiset<uint32_t> seen(bvh.order().begin(), bvh.order().end());
+  ASSERT_EQ(seen.size(), scene.primitive_count());
+  for (uint32_t p = 0; p < scene.primitive_count(); ++p) ASSERT_EQ(seen.count(p), 1u) << p;
+  uint32_t leaves = 0, covered = 0;
+  auto inside = [](const Bounds3& in, const Bounds3& out) {
+    return glm::all(glm::greaterThanEqual(in.lo, out.lo)) && glm::all(glm::lessThanEqual(in.hi, out.hi));
+  };
+  for (size_t i = 0; i < nodes.size(); ++i) {
+    const BvhNode& n = nodes[i];
+    if (n.is_leaf()) {
+      ++leaves;
+      covered += n.count;
+      EXPECT_LE(n.count, uint32_t(leaf));
+      for (uint32_t k = n.offset; k < n.offset + n.count; ++k)
+        EXPECT_TRUE(inside(scene.primitive_bounds(bvh.order()[k]), n.bounds));
+    } else {
+      ASSERT_GT(n.offset, i + 1);
+      ASSERT_LT(n.offset, nodes.size());
+      EXPECT_TRUE(inside(nodes[i + 1].bounds, n.bounds));
+      EXPECT_TRUE(inside(nodes[n.offset].bounds, n.bounds));
+    }
+  }
+  EXPECT_EQ(covered, scene.primitive_count());
+  EXPECT_EQ(nodes.size(), 2 * size_t(leaves) - 1);
+  EXPECT_EQ(bvh.stats().leaves, leaves);
+  EXPECT_EQ(bvh.stats().nodes, nodes.size());
+}
+
+TEST(split, tree_is_well_formed) {
+  Scene scene;
+  std::string why;
+  if (!test::try_load(std::string(PT_SOURCE_DIR) + "/scenes/cornell_coil.dae", &scene, &why))
+    GTEST_SKIP() << why;
+  for (int leaf : {1, 4, 8}) {
+    BvhOptions sah{BvhSplitMethod::sah, leaf, 16, {}}, mid{BvhSplitMethod::median, leaf, 16, {}};
+    expect_well_formed(scene, Bvh(scene, sah), leaf);
+    expect_well_formed(scene, Bvh(scene, mid), leaf);
+  }
+}
+
+TEST(split, bad_options_are_refused) {
+  Scene s;
+  add_triangle(&s, {0, 0, 0}, {1, 0, 0}, {0, 1, 0});
+  EXPECT_THROW(Bvh(s, BvhOptions{BvhSplitMethod::sah, 0, 16, {}}), std::invalid_argument);
+  EXPECT_THROW(Bvh(s, BvhOptions{BvhSplitMethod::sah, 1000, 16, {}}), std::invalid_argument);
 }
 
 }  // namespace

@@ -1,13 +1,19 @@
-// Part 2: the BVH on inputs that break naive builds and traversals — no primitives, one, all
-// centroids equal, boxes of zero thickness, duplicates — gives brute force's answers; and the
-// tree it builds is well formed.
-#include <set>
+// Part 2, step 3 (traversal): the BVH gives brute force's answers (same t, same primitive, same
+// occlusion): on inputs that break naive builds and traversals (no primitives, one, all centroids
+// equal, boxes of zero thickness, duplicates); on 100,000 random rays per scene of the project's
+// and the course's; as whole images, pixel for pixel; and as Intel Embree on the course's ray sets.
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <ostream>
 #include <string>
 #include <vector>
 
 #include <glm/gtc/constants.hpp>
 #include <gtest/gtest.h>
 
+#include "framework/rays/ray_set.h"
+#include "parts/1-raygen/pixel_loop.h"
 #include "parts/2-bvh/tests/bvh_check.h"
 #include "parts/2-bvh/tests/bvh_test_inputs.h"
 
@@ -15,6 +21,23 @@ namespace pt {
 namespace {
 
 using test::add_triangle;
+using test::Case;
+using test::case_name;
+using test::kRays;
+
+/// A scene to check against brute force: the project's own (scenes/) or the course's.
+struct SceneCase {
+  test::Case c;
+  bool course = false;
+};
+void PrintTo(const SceneCase& s, std::ostream* os) {
+  *os << (s.course ? "course " : "project ");
+  test::PrintTo(s.c, os);
+}
+
+/// The step's tests: the parameterised ones take a SceneCase, the others none (one fixture,
+/// since GoogleTest keeps one fixture class to a test suite).
+class traversal : public testing::TestWithParam<SceneCase> {};
 
 /// Checks `scene` against brute force with both split methods and two leaf sizes.
 void expect_brute_force_answers(const Scene& scene, std::vector<Ray> extra = {}) {
@@ -36,7 +59,7 @@ void expect_brute_force_answers(const Scene& scene, std::vector<Ray> extra = {})
     }
 }
 
-TEST(Part2BvhDegenerate, EmptySceneHasNoTreeAndNoHits) {
+TEST_F(traversal, empty_scene_has_no_tree_and_no_hits) {
   const Scene scene;
   const Bvh bvh(scene);
   EXPECT_TRUE(bvh.nodes().empty());
@@ -47,7 +70,7 @@ TEST(Part2BvhDegenerate, EmptySceneHasNoTreeAndNoHits) {
   EXPECT_FALSE(bvh.occluded(ray));
 }
 
-TEST(Part2BvhDegenerate, OnePrimitiveIsOneLeaf) {
+TEST_F(traversal, one_primitive_is_one_leaf) {
   Scene tri;
   add_triangle(&tri, {-1, -1, 0}, {1, -1, 0}, {0, 1, 0});
   EXPECT_EQ(Bvh(tri).nodes().size(), 1u);
@@ -58,7 +81,7 @@ TEST(Part2BvhDegenerate, OnePrimitiveIsOneLeaf) {
   expect_brute_force_answers(sphere);
 }
 
-TEST(Part2BvhDegenerate, AllCentroidsEqual) {
+TEST_F(traversal, all_centroids_equal) {
   // Triangles and spheres whose boxes are all centred on the origin: no plane separates them.
   const Scene s = test::centroids_all_equal();
   const Bvh bvh(s, BvhOptions{BvhSplitMethod::sah, 4, 16, {}});
@@ -67,12 +90,12 @@ TEST(Part2BvhDegenerate, AllCentroidsEqual) {
   expect_brute_force_answers(s);
 }
 
-TEST(Part2BvhDegenerate, FlatBoxesAndRaysInTheirPlane) {
+TEST_F(traversal, flat_boxes_and_rays_in_their_plane) {
   // Every box has zero thickness; rays inside the plane make the slab test divide 0 by 0.
   expect_brute_force_answers(test::flat_grid(), test::rays_at_flat_grid(11));
 }
 
-TEST(Part2BvhDegenerate, DuplicatesTieToTheLowestIndex) {
+TEST_F(traversal, duplicates_tie_to_the_lowest_index) {
   const Scene s = test::duplicate_triangles(50);
   const Bvh bvh(s, BvhOptions{BvhSplitMethod::sah, 1, 16, {}});
   SurfaceHit hit;
@@ -83,50 +106,7 @@ TEST(Part2BvhDegenerate, DuplicatesTieToTheLowestIndex) {
   expect_brute_force_answers(s);
 }
 
-/// Checks the tree's invariants: every primitive once, boxes nested, leaves within size.
-void expect_well_formed(const Scene& scene, const Bvh& bvh, int leaf) {
-  const auto& nodes = bvh.nodes();
-  std::multiset<uint32_t> seen(bvh.order().begin(), bvh.order().end());
-  ASSERT_EQ(seen.size(), scene.primitive_count());
-  for (uint32_t p = 0; p < scene.primitive_count(); ++p) ASSERT_EQ(seen.count(p), 1u) << p;
-  uint32_t leaves = 0, covered = 0;
-  auto inside = [](const Bounds3& in, const Bounds3& out) {
-    return glm::all(glm::greaterThanEqual(in.lo, out.lo)) && glm::all(glm::lessThanEqual(in.hi, out.hi));
-  };
-  for (size_t i = 0; i < nodes.size(); ++i) {
-    const BvhNode& n = nodes[i];
-    if (n.is_leaf()) {
-      ++leaves;
-      covered += n.count;
-      EXPECT_LE(n.count, uint32_t(leaf));
-      for (uint32_t k = n.offset; k < n.offset + n.count; ++k)
-        EXPECT_TRUE(inside(scene.primitive_bounds(bvh.order()[k]), n.bounds));
-    } else {
-      ASSERT_GT(n.offset, i + 1);
-      ASSERT_LT(n.offset, nodes.size());
-      EXPECT_TRUE(inside(nodes[i + 1].bounds, n.bounds));
-      EXPECT_TRUE(inside(nodes[n.offset].bounds, n.bounds));
-    }
-  }
-  EXPECT_EQ(covered, scene.primitive_count());
-  EXPECT_EQ(nodes.size(), 2 * size_t(leaves) - 1);
-  EXPECT_EQ(bvh.stats().leaves, leaves);
-  EXPECT_EQ(bvh.stats().nodes, nodes.size());
-}
-
-TEST(Part2BvhBuild, TreeIsWellFormed) {
-  Scene scene;
-  std::string why;
-  if (!test::try_load(std::string(PT_SOURCE_DIR) + "/scenes/cornell_coil.dae", &scene, &why))
-    GTEST_SKIP() << why;
-  for (int leaf : {1, 4, 8}) {
-    BvhOptions sah{BvhSplitMethod::sah, leaf, 16, {}}, mid{BvhSplitMethod::median, leaf, 16, {}};
-    expect_well_formed(scene, Bvh(scene, sah), leaf);
-    expect_well_formed(scene, Bvh(scene, mid), leaf);
-  }
-}
-
-TEST(Part2BvhDegenerate, ClusteredGeometry) {
+TEST_F(traversal, clustered_geometry) {
   // Small triangles in a few tight clusters among big random triangles: boxes that overlap a lot.
   Scene s;
   Rng rng(23);
@@ -144,11 +124,105 @@ TEST(Part2BvhDegenerate, ClusteredGeometry) {
   expect_brute_force_answers(s);
 }
 
-TEST(Part2BvhBuild, BadOptionsAreRefused) {
-  Scene s;
-  add_triangle(&s, {0, 0, 0}, {1, 0, 0}, {0, 1, 0});
-  EXPECT_THROW(Bvh(s, BvhOptions{BvhSplitMethod::sah, 0, 16, {}}), std::invalid_argument);
-  EXPECT_THROW(Bvh(s, BvhOptions{BvhSplitMethod::sah, 1000, 16, {}}), std::invalid_argument);
+
+TEST_P(traversal, matches_brute_force) {
+  Scene scene;
+  std::string why;
+  const SceneCase& sc = GetParam();
+  if (!sc.course) {
+    if (!test::try_load(std::string(PT_SOURCE_DIR) + "/scenes/" + sc.c.path, &scene, &why))
+      GTEST_SKIP() << why << " (the project's scenes are generated by scene_gen)";
+  } else if (!test::try_load(std::string(PT_SHARED_SCENES_DIR) + "/" + sc.c.path, &scene, &why)) {
+    GTEST_SKIP() << why << " (the course's scenes live beside the project, in ../shared)";
+  }
+  test::check_against_brute_force(scene, sc.c);
+}
+
+// The two bunnies (about 30,000 triangles) get their 100,000 rays in the stress test, where
+// brute force's cost belongs.
+INSTANTIATE_TEST_SUITE_P(
+    , traversal,
+    testing::Values(SceneCase{{"cornell_empty.dae", BvhSplitMethod::sah, 4, kRays}},
+                    SceneCase{{"cornell_spheres.dae", BvhSplitMethod::sah, 4, kRays}},
+                    SceneCase{{"cornell_mirror_glass.dae", BvhSplitMethod::sah, 1, kRays}},
+                    SceneCase{{"cornell_coil.dae", BvhSplitMethod::sah, 4, kRays}},
+                    SceneCase{{"cornell_coil.dae", BvhSplitMethod::median, 1, kRays}},
+                    SceneCase{{"cornell_coil.dae", BvhSplitMethod::sah, 16, kRays}},
+                    SceneCase{{"simple/cube.dae", BvhSplitMethod::sah, 4, kRays}, true},
+                    SceneCase{{"simple/plane.dae", BvhSplitMethod::sah, 4, kRays}, true},
+                    SceneCase{{"sky/CBempty.dae", BvhSplitMethod::sah, 4, kRays}, true},
+                    SceneCase{{"sky/CBspheres.dae", BvhSplitMethod::sah, 4, kRays}, true},
+                    SceneCase{{"sky/CBspheres_lambertian.dae", BvhSplitMethod::median, 4, kRays}, true},
+                    SceneCase{{"sky/CBgems.dae", BvhSplitMethod::sah, 4, kRays}, true},
+                    SceneCase{{"meshedit/teapot.dae", BvhSplitMethod::sah, 4, kRays}, true},
+                    SceneCase{{"keenan/banana.dae", BvhSplitMethod::median, 2, kRays}, true},
+                    SceneCase{{"sky/CBbunny.dae", BvhSplitMethod::sah, 4, 10000}, true},
+                    SceneCase{{"sky/bunny.dae", BvhSplitMethod::median, 4, 10000}, true}),
+    [](const testing::TestParamInfo<SceneCase>& info) {
+      return (info.param.course ? "course_" : "project_") +
+             case_name(testing::TestParamInfo<test::Case>(info.param.c, info.index));
+    });
+
+// The normals view through the BVH (both split methods) is brute force's, pixel for pixel.
+TEST_F(traversal, image_equals_brute_force_pixel_for_pixel) {
+  for (const char* file : {"cornell_spheres.dae", "cornell_coil.dae"}) {
+    SCOPED_TRACE(file);
+    Scene scene;
+    std::string why;
+    if (!test::try_load(std::string(PT_SOURCE_DIR) + "/scenes/" + file, &scene, &why))
+      GTEST_SKIP() << why;
+    const BruteForce bf(scene);
+    const Bvh sah(scene), median(scene, BvhOptions{BvhSplitMethod::median, 1, 16, {}});
+    const std::vector<glm::dvec3> want = test::render_normals(scene, bf, 48, 36, 4, 42);
+    int lit = 0;
+    for (const glm::dvec3& p : want) lit += p != glm::dvec3(0.0);
+    EXPECT_GT(lit, 48 * 36 / 4) << "the camera should see the scene";
+    for (const Bvh* bvh : {&sah, &median}) {
+      const std::vector<glm::dvec3> got = test::render_normals(scene, *bvh, 48, 36, 4, 42);
+      int differ = 0;
+      for (size_t i = 0; i < want.size(); ++i) differ += got[i] != want[i];
+      EXPECT_EQ(differ, 0) << (bvh == &sah ? "sah" : "median");
+    }
+  }
+}
+
+TEST_F(traversal, cbbunny_agrees_with_embree) {
+  Scene scene;
+  std::string why;
+  if (!test::try_load(std::string(PT_SHARED_SCENES_DIR) + "/sky/CBbunny.dae", &scene, &why))
+    GTEST_SKIP() << why << " (the course's scenes live beside the project, in ../shared)";
+  const std::string prefix = std::string(PT_SHARED_RAYS_DIR) + "/CBbunny.";
+  if (!test::file_exists(prefix + "diffuse.rays"))
+    GTEST_SKIP() << prefix << "*.rays are not there (the shared ray sets, ../shared/rays)";
+  scene.spheres.clear();  // the sets count triangles only
+  const Bvh bvh(scene);
+  for (const char* set : {"primary", "diffuse", "shadow"}) {
+    const bool occlusion = std::string(set) == "shadow";
+    const std::vector<Ray> rays = read_ray_set(prefix + set + ".rays");
+    const std::vector<float> answers = read_hit_set(prefix + set + ".hits");
+    ASSERT_EQ(rays.size(), answers.size());
+    std::atomic<size_t> differ{0}, hits{0};
+    tbb::parallel_for(size_t(0), rays.size(), [&](size_t i) {
+      float t;
+      if (occlusion) {
+        t = bvh.occluded(rays[i]) ? 1.0f : 0.0f;
+      } else {
+        SurfaceHit hit;
+        t = bvh.intersect(rays[i], &hit) ? hit.t : INFINITY;
+      }
+      const float a = answers[i];
+      hits += occlusion ? a == 1.0f : std::isfinite(a);
+      // Two intersectors round differently: the same surface is within a part in 10^4.
+      const bool same = (occlusion || std::isinf(a) || std::isinf(t))
+                            ? a == t
+                            : std::abs(a - t) <= 1e-4f * std::max(std::abs(a), std::abs(t));
+      differ += !same;
+    });
+    // "All but a vanishing fraction" (ties and grazing hits): at most one ray in 10,000.
+    EXPECT_LE(differ.load(), rays.size() / 10000) << set;
+    EXPECT_GT(hits.load(), rays.size() / 10) << set << ": too few hits to be a test";
+    std::printf("%s: %zu rays, %zu disagree with Embree\n", set, rays.size(), differ.load());
+  }
 }
 
 }  // namespace
