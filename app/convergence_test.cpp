@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "framework/plot/convergence_plot.h"
+#include "framework/testing/temp_folder.h"
 
 namespace pt {
 namespace {
@@ -24,9 +25,6 @@ namespace fs = std::filesystem;
 class BenchConvergence : public ::testing::Test {
  protected:
   void SetUp() override {
-    std::string tmpl = (fs::temp_directory_path() / "pt-convergence-XXXXXX").string();
-    ASSERT_NE(mkdtemp(tmpl.data()), nullptr);
-    dir_ = tmpl;
     options_.scene_path = std::string(PT_SOURCE_DIR) + "/scenes/cornell_spheres.dae";
     options_.out_dir = dir_;
     options_.width = 32;
@@ -37,11 +35,8 @@ class BenchConvergence : public ::testing::Test {
     options_.adaptive_batch = 4;  // so that adaptive sampling has a budget above one batch
     options_.speedup_budget = 4;
   }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
-  fs::path dir_;
+  test::TempFolder folder_{"pt-convergence"};
+  const fs::path& dir_ = folder_.path();
   ConvergenceOptions options_;
 };
 

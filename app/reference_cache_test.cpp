@@ -11,28 +11,22 @@
 
 #include <gtest/gtest.h>
 
+#include "framework/testing/temp_folder.h"
+
 namespace pt {
 namespace {
 
 namespace fs = std::filesystem;
 
-/// A fresh folder in the temp directory, removed when the test ends.
+/// A fresh folder in the temp directory with a scene file in it, removed when the test ends.
 class BenchReferenceCache : public ::testing::Test {
  protected:
   void SetUp() override {
-    std::string tmpl = (fs::temp_directory_path() / "pt-reference-cache-XXXXXX").string();
-    ASSERT_NE(mkdtemp(tmpl.data()), nullptr);
-    dir_ = tmpl;
-    scene_ = dir_ / "scene.dae";
-    std::ofstream(scene_) << "<COLLADA>a scene</COLLADA>\n";
+    scene_ = folder_.write("scene.dae", "<COLLADA>a scene</COLLADA>\n");
     settings_.width = 6;
     settings_.height = 4;
     settings_.samples_per_pixel = 64;
     settings_.seed = 99;
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
   }
 
   /// Stands in for a render: a flat image whose value says which call made it.
@@ -53,7 +47,9 @@ class BenchReferenceCache : public ::testing::Test {
     return load_or_make_reference(scene_.string(), s, dir_ / "cache", render, fresh, log);
   }
 
-  fs::path dir_, scene_;
+  test::TempFolder folder_{"pt-reference-cache"};
+  const fs::path& dir_ = folder_.path();
+  fs::path scene_;
   RenderSettings settings_;
   int renders_ = 0;
 };

@@ -12,20 +12,13 @@
 namespace pt {
 namespace {
 
-using test::heavy_tailed_sample;
-using test::kUnbiasBlock;
-using test::kUnbiasH;
-using test::kUnbiasSettings;
-using test::kUnbiasW;
-using test::non_adaptive_reference;
-
 /// The course's rule, here only as a control: it decides on the very samples it averages.
 int biased_course_rule(const AdaptiveSettings& settings, Rng& rng, PixelStats* stats) {
   IlluminanceStats lum;
   int taken = 0;
   while (taken < settings.max_samples) {
     for (int i = 0; i < settings.batch && taken < settings.max_samples; ++i, ++taken) {
-      glm::vec3 L = heavy_tailed_sample(rng);
+      glm::vec3 L = test::heavy_tailed_sample(rng);
       stats->add(L);
       lum.add(illuminance(L));
     }
@@ -44,7 +37,7 @@ int decision_samples_also_averaged(const AdaptiveSettings& settings, Rng& rng,
   int taken = 0;
   while (taken < settings.max_samples) {
     for (int i = 0; i < settings.batch && taken < settings.max_samples; ++i, ++taken) {
-      glm::vec3 L = heavy_tailed_sample(rng);
+      glm::vec3 L = test::heavy_tailed_sample(rng);
       stats->add(L);
       if (taken % 4 == 3) decision.add(illuminance(L));
     }
@@ -59,13 +52,14 @@ int decision_samples_also_averaged(const AdaptiveSettings& settings, Rng& rng,
 TEST(PipelineAdaptiveControls, CourseRuleOnTheSameSamplesIsCaught) {
   // Same stream, same settings, same test at the same significance, but the stopping decision
   // made on the samples that are averaged: the block t-test must fail, or it has no power here.
-  Film film(kUnbiasW, kUnbiasH);
-  for (int y = 0; y < kUnbiasH; ++y)
-    for (int x = 0; x < kUnbiasW; ++x) {
-      Rng rng(42, uint64_t(y) * kUnbiasW + x);
-      biased_course_rule(kUnbiasSettings, rng, &film.at(x, y));
+  Film film(test::kUnbiasW, test::kUnbiasH);
+  for (int y = 0; y < test::kUnbiasH; ++y)
+    for (int x = 0; x < test::kUnbiasW; ++x) {
+      Rng rng(42, uint64_t(y) * test::kUnbiasW + x);
+      biased_course_rule(test::kUnbiasSettings, rng, &film.at(x, y));
     }
-  BlockTestResult r = block_t_test(film.estimate(), non_adaptive_reference(), {kUnbiasBlock, 0.01});
+  BlockTestResult r =
+      block_t_test(film.estimate(), test::non_adaptive_reference(), {test::kUnbiasBlock, 0.01});
   std::cout << "course rule: " << r.summary << "\n";
   EXPECT_FALSE(r.pass) << "the course's rule went undetected: " << r.summary;
   EXPECT_LT(r.overall_ratio.x, 0.97f) << r.summary;
@@ -74,13 +68,14 @@ TEST(PipelineAdaptiveControls, CourseRuleOnTheSameSamplesIsCaught) {
 TEST(PipelineAdaptiveControls, DecisionSamplesAlsoAveragedIsCaught) {
   // The stopping rule of the solution, but the decision samples also enter the value: the same
   // test at the same significance must catch it (a bias near 6%, smaller than the course's).
-  Film film(kUnbiasW, kUnbiasH);
-  for (int y = 0; y < kUnbiasH; ++y)
-    for (int x = 0; x < kUnbiasW; ++x) {
-      Rng rng(42, uint64_t(y) * kUnbiasW + x);
-      decision_samples_also_averaged(kUnbiasSettings, rng, &film.at(x, y));
+  Film film(test::kUnbiasW, test::kUnbiasH);
+  for (int y = 0; y < test::kUnbiasH; ++y)
+    for (int x = 0; x < test::kUnbiasW; ++x) {
+      Rng rng(42, uint64_t(y) * test::kUnbiasW + x);
+      decision_samples_also_averaged(test::kUnbiasSettings, rng, &film.at(x, y));
     }
-  BlockTestResult r = block_t_test(film.estimate(), non_adaptive_reference(), {kUnbiasBlock, 0.01});
+  BlockTestResult r =
+      block_t_test(film.estimate(), test::non_adaptive_reference(), {test::kUnbiasBlock, 0.01});
   std::cout << "decision samples averaged too: " << r.summary << "\n";
   EXPECT_FALSE(r.pass) << "averaging the decision samples went undetected: " << r.summary;
 }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <glm/vec3.hpp>
+#include <gtest/gtest.h>
 
 #include "framework/testing/lighting_rig.h"
 #include "parts/3-direct/direct_lighting.h"
@@ -63,6 +64,30 @@ inline Ray ray_at_plane(Rng& g) {
   r.o = glm::vec3(g.next_float() - 0.5f, g.next_float() - 0.5f, 1.0f);
   r.d = glm::normalize(glm::vec3(0.1f, -0.2f, -1.0f));
   return r;
+}
+
+/// A convex diffuse sphere of albedo ρ under a uniform sky L never sees itself: L_out = ρL, by
+/// hemisphere or light sampling. Expects it within chance.
+inline void expect_sphere_under_sky_is_rho_times_l(bool hemisphere) {
+  const float rho = 0.6f, L = 2.0f;
+  Rig rig(sphere_under_sky(rho, L));
+  rig.ctx.hemisphere = hemisphere;
+  rig.ctx.light_samples = 4;
+  auto xs = sample_values([&](const Ray& r, Rng& g) { return direct_only(rig.ctx, r, g); },
+                          ray_at_unit_sphere, 20000, 11);
+  auto c = t_test_mean(xs, rho * L, kDirectAlpha);
+  EXPECT_TRUE(c.pass) << "mean " << c.mean << " ± " << c.stderr_ << ", expected " << rho * L;
+}
+
+/// A diffuse plane facing a uniform sky, seen from above: ρL as well (it sees only sky), by
+/// hemisphere or light sampling. Expects it within chance.
+inline void expect_plane_under_sky_is_rho_times_l(bool hemisphere) {
+  Rig rig(plane_under_sky());
+  rig.ctx.hemisphere = hemisphere;
+  auto xs = sample_values([&](const Ray& r, Rng& g) { return direct_only(rig.ctx, r, g); },
+                          ray_at_plane, 20000, 5);
+  auto c = t_test_mean(xs, 0.3 * 1.5, kDirectAlpha);
+  EXPECT_TRUE(c.pass) << "mean " << c.mean << " ± " << c.stderr_ << ", expected 0.45";
 }
 
 /// The sum of 64 one_bounce_radiance samples at the point of the ceiling over the panel, seen
