@@ -291,7 +291,7 @@ int run(int argc, char** argv) {
       ->check(CLI::Range(0.0, 600.0));
   app.add_option("--seed", seed, "seed of the diffuse and shadow sets made from the scene");
   app.add_flag("--wide", wide,
-               "also time the framework's wide BVH (8 children a node) collapsed from the first "
+               "also time the app's wide BVH (8 children a node) collapsed from the first "
                "tree (\"wide\"): "
                "its nearest query (primitive, t, barycentrics: what rtcIntersect1 reports) is what "
                "is compared with Embree; its full intersect (the SurfaceHit a renderer shades) is "

@@ -1,4 +1,4 @@
-// The framework's wide BVH: the student's binary tree (Part 2) collapsed to eight children a node,
+// The app's wide BVH: the student's binary tree (Part 2) collapsed to eight children a node,
 // traversed with four-box SIMD slab tests, answering exactly as brute force does.
 // SOLUTION-ONLY FILE: not in the student handout, since it holds complete Part 1 and Part 2 answers.
 #pragma once

@@ -1,4 +1,4 @@
-// Inputs the BVH tests share (Part 2's and the framework's wide tree's): the degenerate scenes
+// Inputs the BVH tests share (Part 2's and the wide tree's): the degenerate scenes
 // that break naive builds and traversals, and the normals view rendered through any ray query.
 #pragma once
 
