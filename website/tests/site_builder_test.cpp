@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "framework/text/text_file.h"
 #include "website/tests/test_folder.h"
 
 namespace fs = std::filesystem;
@@ -23,12 +24,7 @@ std::string all(const std::vector<Problem>& problems) {
   return s;
 }
 
-std::string read(const fs::path& p) {
-  std::ifstream in(p);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+std::string read(const fs::path& p) { return pt::read_text_file(p); }
 
 /// A write-up folder with a scene, the fake pathtracer, and a log of its runs.
 class WebsiteBuild : public ::testing::Test {

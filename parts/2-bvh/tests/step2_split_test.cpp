@@ -1,9 +1,6 @@
 // Part 2, step 2 (split): the split choices on their own (the midpoint, the SAH sweep), and the
 // build's decisions made with them: a node stays a leaf exactly when splitting it does not pay,
-// the size cut separates big primitives from small ones, the tree records its split axes and is
-// well formed.
-#include <set>
-#include <stdexcept>
+// the size cut separates big primitives from small ones, the tree records its split axes.
 #include <string>
 #include <vector>
 
@@ -170,56 +167,6 @@ TEST(split, sah_has_no_split_when_one_bin_holds_everything) {
   bins[2].count = 7;
   bins[2].bounds = kUnit;
   EXPECT_EQ(best_sah_split(bins, 4, kUnit.surface_area(), SahCosts{}).plane, -1);
-}
-
-/// Checks the tree's invariants: every primitive once, boxes nested, leaves within size.
-void expect_well_formed(const Scene& scene, const Bvh& bvh, int leaf) {
-  const auto& nodes = bvh.nodes();
-  std::multiset<uint32_t> seen(bvh.order().begin(), bvh.order().end());
-  ASSERT_EQ(seen.size(), scene.primitive_count());
-  for (uint32_t p = 0; p < scene.primitive_count(); ++p) ASSERT_EQ(seen.count(p), 1u) << p;
-  uint32_t leaves = 0, covered = 0;
-  auto inside = [](const Bounds3& in, const Bounds3& out) {
-    return glm::all(glm::greaterThanEqual(in.lo, out.lo)) && glm::all(glm::lessThanEqual(in.hi, out.hi));
-  };
-  for (size_t i = 0; i < nodes.size(); ++i) {
-    const BvhNode& n = nodes[i];
-    if (n.is_leaf()) {
-      ++leaves;
-      covered += n.count;
-      EXPECT_LE(n.count, uint32_t(leaf));
-      for (uint32_t k = n.offset; k < n.offset + n.count; ++k)
-        EXPECT_TRUE(inside(scene.primitive_bounds(bvh.order()[k]), n.bounds));
-    } else {
-      ASSERT_GT(n.offset, i + 1);
-      ASSERT_LT(n.offset, nodes.size());
-      EXPECT_TRUE(inside(nodes[i + 1].bounds, n.bounds));
-      EXPECT_TRUE(inside(nodes[n.offset].bounds, n.bounds));
-    }
-  }
-  EXPECT_EQ(covered, scene.primitive_count());
-  EXPECT_EQ(nodes.size(), 2 * size_t(leaves) - 1);
-  EXPECT_EQ(bvh.stats().leaves, leaves);
-  EXPECT_EQ(bvh.stats().nodes, nodes.size());
-}
-
-TEST(split, tree_is_well_formed) {
-  Scene scene;
-  std::string why;
-  if (!test::try_load(std::string(PT_SOURCE_DIR) + "/scenes/cornell_coil.dae", &scene, &why))
-    GTEST_SKIP() << why;
-  for (int leaf : {1, 4, 8}) {
-    BvhOptions sah{BvhSplitMethod::sah, leaf, 16, {}}, mid{BvhSplitMethod::median, leaf, 16, {}};
-    expect_well_formed(scene, Bvh(scene, sah), leaf);
-    expect_well_formed(scene, Bvh(scene, mid), leaf);
-  }
-}
-
-TEST(split, bad_options_are_refused) {
-  Scene s;
-  add_triangle(&s, {0, 0, 0}, {1, 0, 0}, {0, 1, 0});
-  EXPECT_THROW(Bvh(s, BvhOptions{BvhSplitMethod::sah, 0, 16, {}}), std::invalid_argument);
-  EXPECT_THROW(Bvh(s, BvhOptions{BvhSplitMethod::sah, 1000, 16, {}}), std::invalid_argument);
 }
 
 }  // namespace

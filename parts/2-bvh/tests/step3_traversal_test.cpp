@@ -59,17 +59,6 @@ void expect_brute_force_answers(const Scene& scene, std::vector<Ray> extra = {})
     }
 }
 
-TEST_F(traversal, empty_scene_has_no_tree_and_no_hits) {
-  const Scene scene;
-  const Bvh bvh(scene);
-  EXPECT_TRUE(bvh.nodes().empty());
-  EXPECT_EQ(bvh.stats().nodes, 0u);
-  SurfaceHit hit;
-  Ray ray;
-  EXPECT_FALSE(bvh.intersect(ray, &hit));
-  EXPECT_FALSE(bvh.occluded(ray));
-}
-
 TEST_F(traversal, one_primitive_is_one_leaf) {
   Scene tri;
   add_triangle(&tri, {-1, -1, 0}, {1, -1, 0}, {0, 1, 0});
