@@ -45,7 +45,6 @@ function(pt_add_test)
     set(T_TIMEOUT 300)
   endif()
   add_executable(${T_NAME} ${T_SOURCES})
-  pt_plain_link(${T_NAME})
   target_link_libraries(${T_NAME} PRIVATE ${T_LIBS} GTest::gtest GTest::gtest_main GTest::gmock)
   if(T_CGAL)
     # CGAL is header-only and slow to compile: only the tests that check against it see it.
