@@ -80,8 +80,12 @@ TEST_F(BenchConvergence, TinyStudyWritesATableThePlotterReads) {
   EXPECT_GT(r.allocation_bound.best_sample_fraction, 0.3);
   EXPECT_LT(r.allocation_bound.best_sample_fraction, 1.0);
   EXPECT_LT(r.allocation_bound.zero_variance_share, 0.2);
-  EXPECT_GT(r.allocation_bound.best_time_fraction, 0.3);
-  EXPECT_LT(r.allocation_bound.best_time_fraction, 1.0);
+  // The time fraction weighs each pixel by its measured cost, which a busy machine skews at
+  // will (a pixel preempted mid-sample looks expensive): only what holds whatever the clocks
+  // say is asserted here, Cauchy-Schwarz's (mean sqrt(ac))^2 <= mean a * mean c. The formula
+  // itself is checked on exact costs in allocation_bound_test.
+  EXPECT_GT(r.allocation_bound.best_time_fraction, 0.0);
+  EXPECT_LE(r.allocation_bound.best_time_fraction, 1.0 + 1e-9);
   EXPECT_NE(convergence_report(r).find("the best any per-pixel allocation can do"),
             std::string::npos);
   EXPECT_TRUE(r.has_speedup);
