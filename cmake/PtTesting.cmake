@@ -1,6 +1,7 @@
-# pt_add_test(NAME name SOURCES a.cpp ... LABELS part1 ... [LIBS lib ...] [CGAL] [TIMEOUT s])
-# One GoogleTest executable, registered with CTest test by test under the given labels, so that
-# `ctest -L part1` runs one part and a failing name reads like the syllabus.
+# The project's build helpers: a library of a folder, the test executables of a folder.
+#
+# pt_add_library_in(NAME lib DIR dir LIBS dep ... [EXCLUDE regex ...])
+# pt_add_tests_in(DIR dir LABEL label LIBS lib ... [EXCLUDE regex ...] [STEPS] [OUT var])
 include_guard(GLOBAL)
 if(PT_BUILD_TESTS)
   enable_testing()
@@ -8,11 +9,38 @@ if(PT_BUILD_TESTS)
   include(GoogleTest)
 endif()
 
+# pt_add_library_in(NAME lib DIR dir LIBS dep ... [EXCLUDE regex ...]): a static library of every
+# .cpp under dir except tests (*_test.cpp, tests/), application mains (*_main.cpp) and EXCLUDEd
+# subfolders. Every project header is included from the project root
+# ("framework/math/ray.h"), so that is the one include folder; LIBS are the layers below it.
+function(pt_add_library_in)
+  cmake_parse_arguments(A "" "NAME;DIR" "LIBS;EXCLUDE" ${ARGN})
+  file(GLOB_RECURSE srcs CONFIGURE_DEPENDS ${A_DIR}/*.cpp)
+  list(FILTER srcs EXCLUDE REGEX "_test\\.cpp$")
+  list(FILTER srcs EXCLUDE REGEX "_main\\.cpp$")
+  list(FILTER srcs EXCLUDE REGEX "/tests/")
+  foreach(regex ${A_EXCLUDE})
+    list(FILTER srcs EXCLUDE REGEX "${regex}")
+  endforeach()
+  if(NOT srcs)
+    message(FATAL_ERROR "${A_DIR}: no sources for the library ${A_NAME}")
+  endif()
+  add_library(${A_NAME} STATIC ${srcs})
+  pt_lto_objects(${A_NAME})
+  target_include_directories(${A_NAME} PUBLIC ${PROJECT_SOURCE_DIR})
+  target_link_libraries(${A_NAME} PUBLIC ${A_LIBS})
+endfunction()
+
+# pt_add_test(NAME name SOURCES a.cpp ... LABELS part1 ... [LIBS lib ...] [CGAL] [TIMEOUT s]
+#             [PREFIX p])
+# One GoogleTest executable, registered with CTest test by test (named PREFIX + suite.test) under
+# the given labels, so that `ctest -L part1` runs one part and a failing name reads like the
+# syllabus.
 function(pt_add_test)
   if(NOT PT_BUILD_TESTS)
     return()
   endif()
-  cmake_parse_arguments(T "CGAL" "NAME;TIMEOUT" "SOURCES;LABELS;LIBS" ${ARGN})
+  cmake_parse_arguments(T "CGAL" "NAME;TIMEOUT;PREFIX" "SOURCES;LABELS;LIBS" ${ARGN})
   if(NOT T_TIMEOUT)
     set(T_TIMEOUT 300)
   endif()
@@ -29,49 +57,58 @@ function(pt_add_test)
     PT_SHARED_RAYS_DIR="${PROJECT_SOURCE_DIR}/../shared/rays"
     PT_BINARY_DIR="${PROJECT_BINARY_DIR}")
   gtest_discover_tests(${T_NAME}
+    TEST_PREFIX "${T_PREFIX}"
     PROPERTIES LABELS "${T_LABELS}" TIMEOUT ${T_TIMEOUT}
     DISCOVERY_TIMEOUT 60)
+  list(LENGTH T_LABELS label_count)
+  if(label_count GREATER 1)
+    # gtest_discover_tests hands its PROPERTIES on as a flat list, so a second label arrives as
+    # a property name of its own and is lost (no test carried `stress`). A file CTest reads after
+    # the discovered list sets the whole list on each of this executable's tests.
+    set(labels_file "${CMAKE_CURRENT_BINARY_DIR}/${T_NAME}_labels.cmake")
+    file(WRITE "${labels_file}" "foreach(t IN LISTS ${T_NAME}_TESTS)\n  set_tests_properties(\"\${t}\" PROPERTIES LABELS \"${T_LABELS}\")\nendforeach()\n")
+    set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES "${labels_file}")
+  endif()
 endfunction()
 
-# pt_add_tests_in(DIR dir LABEL label LIBS lib ... [EXCLUDE regex ...])
+# pt_add_tests_in(DIR dir LABEL label LIBS lib ... [EXCLUDE regex ...] [STEPS] [OUT var])
 # Every *_test.cpp under dir becomes a test executable of its own, labelled `label`;
 # *_stress_test.cpp is also labelled `stress`; *_exact_test.cpp is linked with CGAL (and only it,
 # since CGAL costs seconds per file to compile). EXCLUDE leaves out a subfolder that builds its
-# own tests against other libraries.
+# own tests against other libraries. STEPS: the folder is a part's tests/, one file a step,
+# stepK_NAME_test.cpp (a step's CGAL and long checks in stepK_NAME_exact_test.cpp and
+# stepK_NAME_stress_test.cpp), registered as `label.stepK.NAME.test_name`; a file not named so
+# is an error. OUT names a variable that receives the targets made.
 function(pt_add_tests_in)
-  cmake_parse_arguments(A "" "DIR;LABEL" "LIBS;EXCLUDE" ${ARGN})
+  cmake_parse_arguments(A "STEPS" "DIR;LABEL;OUT" "LIBS;EXCLUDE" ${ARGN})
   file(GLOB_RECURSE tests CONFIGURE_DEPENDS ${A_DIR}/*_test.cpp)
   foreach(regex ${A_EXCLUDE})
     list(FILTER tests EXCLUDE REGEX "${regex}")
   endforeach()
+  set(made "")
   foreach(src ${tests})
     get_filename_component(stem ${src} NAME_WE)
     set(labels ${A_LABEL})
     set(extra "")
+    set(prefix "")
     if(stem MATCHES "_stress_test$")
       list(APPEND labels stress)
     endif()
     if(stem MATCHES "_exact")
       set(extra CGAL)
     endif()
-    pt_add_test(NAME ${A_LABEL}_${stem} SOURCES ${src} LABELS ${labels} LIBS ${A_LIBS} ${extra})
+    if(A_STEPS)
+      if(NOT stem MATCHES "^step([0-9]+)_[a-z0-9_]+_test$")
+        message(FATAL_ERROR "${src}: a part's test file is named stepK_NAME_test.cpp "
+                            "(stepK_NAME_exact_test.cpp, stepK_NAME_stress_test.cpp), after the step it checks")
+      endif()
+      set(prefix "${A_LABEL}.step${CMAKE_MATCH_1}.")
+    endif()
+    pt_add_test(NAME ${A_LABEL}_${stem} SOURCES ${src} LABELS ${labels} LIBS ${A_LIBS} ${extra}
+      PREFIX "${prefix}")
+    list(APPEND made ${A_LABEL}_${stem})
   endforeach()
-endfunction()
-
-# pt_add_library_in(NAME lib DIR dir INCLUDE root LIBS dep ... [EXCLUDE regex ...]): a static
-# library of every .cpp under dir except tests, application mains and EXCLUDEd subfolders; its
-# headers are included relative to `root`.
-function(pt_add_library_in)
-  cmake_parse_arguments(A "" "NAME;DIR;INCLUDE" "LIBS;EXCLUDE" ${ARGN})
-  file(GLOB_RECURSE srcs CONFIGURE_DEPENDS ${A_DIR}/*.cpp)
-  list(FILTER srcs EXCLUDE REGEX "_test\\.cpp$")
-  list(FILTER srcs EXCLUDE REGEX "/app/")
-  list(FILTER srcs EXCLUDE REGEX "/tests/")
-  foreach(regex ${A_EXCLUDE})
-    list(FILTER srcs EXCLUDE REGEX "${regex}")
-  endforeach()
-  add_library(${A_NAME} STATIC ${srcs})
-  pt_lto_objects(${A_NAME})
-  target_include_directories(${A_NAME} PUBLIC ${A_INCLUDE})
-  target_link_libraries(${A_NAME} PUBLIC ${A_LIBS})
+  if(A_OUT)
+    set(${A_OUT} ${made} PARENT_SCOPE)
+  endif()
 endfunction()

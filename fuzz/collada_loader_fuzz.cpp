@@ -6,9 +6,9 @@
 #include <cstdio>
 #include <string>
 
-#include "scene/collada_loader.h"
-#include "scene/scene_error.h"
-#include "scene_invariants.h"
+#include "framework/scene/collada_loader.h"
+#include "framework/scene/scene_error.h"
+#include "fuzz/scene_invariants.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string xml(reinterpret_cast<const char*>(data), size);

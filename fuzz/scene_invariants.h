@@ -5,7 +5,7 @@
 #include <cmath>
 #include <string>
 
-#include "scene/scene.h"
+#include "framework/scene/scene.h"
 
 namespace pt::fuzz {
 

@@ -1,11 +1,11 @@
-#include "compare.h"
+#include "grader/compare.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <vector>
 
-#include "image/image.h"
+#include "framework/image/image.h"
 
 namespace pt::grader {
 namespace {

@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "stats/block_ttest.h"
+#include "framework/stats/block_ttest.h"
 
 namespace pt::grader {
 

@@ -1,4 +1,4 @@
-#include "grade.h"
+#include "grader/grade.h"
 
 #include <cmath>
 #include <filesystem>
@@ -9,10 +9,10 @@
 
 #include <pugixml.hpp>
 
-#include "child_process.h"
-#include "compare.h"
-#include "image/estimate_exr.h"
-#include "image/image.h"
+#include "framework/image/estimate_exr.h"
+#include "framework/image/image.h"
+#include "framework/process/child_process.h"
+#include "grader/compare.h"
 
 namespace fs = std::filesystem;
 

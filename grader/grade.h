@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "manifest.h"
+#include "grader/manifest.h"
 
 namespace pt::grader {
 

@@ -1,11 +1,12 @@
-#include "handout.h"
+#include "grader/handout.h"
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
-#include "child_process.h"
+#include "framework/process/child_process.h"
+#include "framework/text/text_file.h"
 
 namespace fs = std::filesystem;
 
@@ -82,10 +83,7 @@ HandoutSummary make_handout(const std::string& source_dir, const std::string& ou
     if (rel.empty()) continue;
     fs::path from = src / rel;
     if (!fs::is_regular_file(from)) continue;  // deleted in the work tree, or a submodule
-    std::ifstream in(from, std::ios::binary);
-    std::ostringstream data;
-    data << in.rdbuf();
-    std::string text = data.str();
+    std::string text = read_text_file(from);
     std::string ext = from.extension().string();
     bool source = ext == ".cpp" || ext == ".h" || ext == ".hpp" || ext == ".cc";
     if (source && is_solution_only(text)) {

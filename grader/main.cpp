@@ -7,10 +7,10 @@
 
 #include <CLI/CLI.hpp>
 
-#include "grade.h"
-#include "handout.h"
-#include "manifest.h"
-#include "report.h"
+#include "grader/grade.h"
+#include "grader/handout.h"
+#include "grader/manifest.h"
+#include "grader/report.h"
 
 namespace fs = std::filesystem;
 using namespace pt::grader;
@@ -60,7 +60,7 @@ int main(int argc, char** argv) {
   options.build = !no_build;
   options.run_tests = !no_tests;
   if (options.pathtracer.empty())
-    options.pathtracer = (fs::path(options.build_dir) / "framework" / "app" / "pathtracer").string();
+    options.pathtracer = (fs::path(options.build_dir) / "app" / "pathtracer").string();
 
   Manifest manifest;
   try {

@@ -1,10 +1,12 @@
-#include "manifest.h"
+#include "grader/manifest.h"
 
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
 #include <boost/crc.hpp>
+
+#include "framework/text/text_file.h"
 
 namespace pt::grader {
 namespace {
@@ -102,11 +104,7 @@ void record_reference(const std::string& manifest_path, const std::string& check
 }
 
 std::string file_checksum(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot be read");
-  std::ostringstream data;
-  data << in.rdbuf();
-  std::string bytes = data.str();
+  const std::string bytes = read_text_file(path);
   boost::crc_32_type crc;
   crc.process_bytes(bytes.data(), bytes.size());
   char buf[16];

@@ -1,4 +1,4 @@
-#include "report.h"
+#include "grader/report.h"
 
 #include <cmath>
 #include <cstdio>

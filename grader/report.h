@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "grade.h"
+#include "grader/grade.h"
 
 namespace pt::grader {
 

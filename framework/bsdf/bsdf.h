@@ -2,6 +2,11 @@
 //
 // Directions are in the local shading frame (z along the shading normal), both pointing away from
 // the surface: wo towards the viewer, wi towards the light.
+//
+// The sampling convention, stated here once for every BSDF and every caller: sample_f returns
+// the BSDF value f(wo, wi) itself, not the estimator weight, and sets the density *pdf of the
+// wi it drew. The caller forms the weight f·|cos θi| / pdf. (For a delta BSDF, f carries the
+// delta's scale divided by |cos θi|, so that the same weight formula holds.)
 #pragma once
 
 #include <glm/vec2.hpp>
@@ -17,8 +22,8 @@ class Bsdf {
   /// The BSDF value for the pair (wo, wi).
   virtual glm::vec3 f(const glm::vec3& wo, const glm::vec3& wi) const = 0;
   /// Draws wi given wo from the uniform point u, sets *pdf to its density (for a delta BSDF, the
-  /// probability of the discrete choice made) and returns f(wo, wi), so that the estimator's
-  /// weight is f·|cos θi| / pdf. Returns zero with *pdf = 0 when it draws nothing.
+  /// probability of the discrete choice made) and returns f(wo, wi): the value, not the weight
+  /// f·|cos θi| / pdf (the convention above). Returns zero with *pdf = 0 when it draws nothing.
   virtual glm::vec3 sample_f(const glm::vec3& wo, glm::vec2 u, glm::vec3* wi, float* pdf) const = 0;
   /// Density with which sample_f would draw wi given wo (0 for delta BSDFs).
   virtual float pdf(const glm::vec3& wo, const glm::vec3& wi) const = 0;

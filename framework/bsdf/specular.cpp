@@ -1,4 +1,4 @@
-#include "bsdf/specular.h"
+#include "framework/bsdf/specular.h"
 
 #include <algorithm>
 #include <cmath>

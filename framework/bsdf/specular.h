@@ -3,7 +3,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "bsdf/bsdf.h"
+#include "framework/bsdf/bsdf.h"
 
 namespace pt {
 

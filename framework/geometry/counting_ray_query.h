@@ -5,7 +5,7 @@
 
 #include <tbb/enumerable_thread_specific.h>
 
-#include "geometry/ray_query.h"
+#include "framework/geometry/ray_query.h"
 
 namespace pt {
 

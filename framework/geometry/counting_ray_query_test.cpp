@@ -1,5 +1,5 @@
 // CountingRayQuery: every query is forwarded unchanged and counted once, on whichever thread.
-#include "geometry/counting_ray_query.h"
+#include "framework/geometry/counting_ray_query.h"
 
 #include <atomic>
 

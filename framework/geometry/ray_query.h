@@ -1,8 +1,8 @@
 // The interface a lighting stage asks rays of: a brute-force loop (Part 1) or a BVH (Part 2).
 #pragma once
 
-#include "geometry/surface_hit.h"
-#include "math/ray.h"
+#include "framework/geometry/surface_hit.h"
+#include "framework/math/ray.h"
 
 namespace pt {
 

@@ -1,6 +1,6 @@
-#include "image/estimate_exr.h"
+#include "framework/image/estimate_exr.h"
 
-#include "image/image.h"
+#include "framework/image/image.h"
 
 namespace pt {
 namespace {

@@ -3,8 +3,8 @@
 
 #include <string>
 
-#include "image/image.h"
-#include "stats/block_ttest.h"
+#include "framework/image/image.h"
+#include "framework/image/render_estimate.h"
 
 namespace pt {
 

@@ -1,4 +1,4 @@
-#include "image/image.h"
+#include "framework/image/image.h"
 
 #include <algorithm>
 #include <cctype>

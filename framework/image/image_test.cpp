@@ -1,5 +1,5 @@
 // Image files: sRGB PNG and float EXR round trips, extra EXR channels, and clear errors.
-#include "image/image.h"
+#include "framework/image/image.h"
 
 #include <cmath>
 #include <filesystem>
@@ -8,8 +8,8 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include "image/estimate_exr.h"
-#include "sampling/rng.h"
+#include "framework/image/estimate_exr.h"
+#include "framework/sampling/rng.h"
 
 namespace fs = std::filesystem;
 

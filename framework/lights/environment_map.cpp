@@ -1,4 +1,4 @@
-#include "lights/environment_map.h"
+#include "framework/lights/environment_map.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include <OpenImageIO/imageio.h>
 
-#include "sampling/warp.h"
+#include "framework/sampling/warp.h"
 
 namespace pt {
 

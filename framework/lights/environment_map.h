@@ -7,7 +7,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include "sampling/distribution.h"
+#include "framework/sampling/distribution.h"
 
 namespace pt {
 

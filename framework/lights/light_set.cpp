@@ -1,4 +1,4 @@
-#include "lights/light_set.h"
+#include "framework/lights/light_set.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,9 +7,9 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "math/float_error.h"
-#include "math/frame.h"
-#include "sampling/warp.h"
+#include "framework/math/float_error.h"
+#include "framework/math/frame.h"
+#include "framework/sampling/warp.h"
 
 namespace pt {
 namespace {
@@ -157,7 +157,6 @@ LightSet::LightSet(const Scene& scene, const EnvironmentMap* environment)
     s.kind = SampledLightKind::uniform_environment;
     s.radiance = ambient_;
     lights_.push_back(std::move(s));
-    has_environment_ = true;
   } else {
     ambient_ = glm::vec3(0.0f);
   }
@@ -165,13 +164,7 @@ LightSet::LightSet(const Scene& scene, const EnvironmentMap* environment)
     SampledLight s;
     s.kind = SampledLightKind::image_environment;
     lights_.push_back(std::move(s));
-    has_environment_ = true;
   }
-}
-
-bool LightSet::only_delta() const {
-  return std::all_of(lights_.begin(), lights_.end(),
-                     [](const SampledLight& l) { return l.is_delta(); });
 }
 
 glm::vec3 LightSet::environment_radiance(const glm::vec3& dir) const {
@@ -262,9 +255,7 @@ LightSample LightSet::sample(int index, const SurfaceHit& hit, glm::vec2 u) cons
         float one_minus_cos = sphere_cone_one_minus_cos(r, dist2);
         if (!(one_minus_cos > 0.0f)) return {};
         Frame frame(dc / std::sqrt(dist2));
-        float z = 1.0f - u.x * one_minus_cos;
-        float sr = safe_sqrt(1.0f - z * z), phi = 2.0f * kPi * u.y;
-        glm::vec3 w = frame.to_world({sr * std::cos(phi), sr * std::sin(phi), z});
+        glm::vec3 w = frame.to_world(square_to_uniform_cone(u, one_minus_cos));
         double bd = glm::dot(glm::dvec3(w), glm::dvec3(dc));
         double disc = double(r) * r - (double(dist2) - bd * bd);
         double t = disc > 0.0 ? bd - std::sqrt(disc) : bd;  // tangent rays touch at bd
@@ -272,7 +263,7 @@ LightSample LightSet::sample(int index, const SurfaceHit& hit, glm::vec2 u) cons
         glm::vec3 n = glm::normalize(q - s.center);
         if (!finish_at(q, gamma(5) * (glm::abs(q) + glm::vec3(r)), n)) return {};
         ls.wi = w;  // the cone's direction, whatever the rounding of q
-        ls.pdf = 1.0f / (2.0f * kPi * one_minus_cos);
+        ls.pdf = uniform_cone_pdf(one_minus_cos);
       } else {
         // Inside: uniform points of the surface, seen from within.
         glm::vec3 n = square_to_uniform_sphere(u);
@@ -322,7 +313,7 @@ float LightSet::pdf(int index, const SurfaceHit& hit, const glm::vec3& wi,
       glm::vec3 dc = s.center - hit.p;
       float dist2 = glm::dot(dc, dc);
       if (dist2 > s.radius * s.radius)
-        return 1.0f / (2.0f * kPi * sphere_cone_one_minus_cos(s.radius, dist2));
+        return uniform_cone_pdf(sphere_cone_one_minus_cos(s.radius, dist2));
       return area_to_solid_angle_pdf(1.0f / l.area, glm::length(on_light->p - hit.p),
                                      glm::dot(wi, on_light->ng));
     }
@@ -361,33 +352,6 @@ bool LightSet::unoccluded(const RayQuery& query, const Ray& ray, int index) cons
     return !query.intersect(ray, &h) || light_of_primitive(h.primitive) == index;
   }
   return !query.occluded(ray);
-}
-
-Ray spawn_ray(const SurfaceHit& hit, const glm::vec3& w) {
-  Ray r;
-  r.o = offset_ray_origin(hit.p, hit.p_error, hit.ng, w);
-  r.d = w;
-  r.tmin = 0.0f;
-  r.tmax = std::numeric_limits<float>::infinity();
-  return r;
-}
-
-Ray spawn_shadow_ray(const SurfaceHit& hit, const LightSample& ls) {
-  Ray r = spawn_ray(hit, ls.wi);
-  if (!std::isfinite(ls.distance)) return r;
-  glm::vec3 target = ls.p;
-  if (ls.n != glm::vec3(0.0f)) target = offset_ray_origin(ls.p, ls.p_error, ls.n, -ls.wi);
-  glm::vec3 d = target - r.o;
-  float len = glm::length(d);
-  if (!(len > 0.0f)) {
-    r.tmax = 0.0f;  // nothing between: the empty interval is never occluded
-    return r;
-  }
-  r.d = d / len;
-  // Stop short of the target by the rounding of its distance, so the end never reaches back
-  // into the light point's error box.
-  r.tmax = len * (1.0f - gamma(4));
-  return r;
 }
 
 }  // namespace pt

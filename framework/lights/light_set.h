@@ -19,6 +19,7 @@
 //   nothing ever divides by a zero area.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -28,12 +29,13 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
-#include "geometry/ray_query.h"
-#include "geometry/surface_hit.h"
-#include "lights/environment_map.h"
-#include "math/ray.h"
-#include "sampling/distribution.h"
-#include "scene/scene.h"
+#include "framework/geometry/ray_query.h"
+#include "framework/geometry/spawn_ray.h"
+#include "framework/geometry/surface_hit.h"
+#include "framework/lights/environment_map.h"
+#include "framework/math/ray.h"
+#include "framework/sampling/distribution.h"
+#include "framework/scene/scene.h"
 
 namespace pt {
 
@@ -84,8 +86,6 @@ class LightSet {
 
   const std::vector<SampledLight>& lights() const { return lights_; }
   bool empty() const { return lights_.empty(); }
-  bool only_delta() const;
-  bool has_environment() const { return has_environment_; }
 
   /// Radiance of a ray that escapes the scene in direction `dir` (zero with no environment).
   glm::vec3 environment_radiance(const glm::vec3& dir) const;
@@ -123,17 +123,14 @@ class LightSet {
   const EnvironmentMap* environment_ = nullptr;
   std::vector<SampledLight> lights_;
   std::vector<int> primitive_light_;
-  bool has_environment_ = false;
   glm::vec3 ambient_{0.0f};
 };
 
-/// A ray leaving `hit` in direction `w`, started just outside the hit point's error box on w's
-/// side of the surface, so it cannot hit the surface it leaves.
-Ray spawn_ray(const SurfaceHit& hit, const glm::vec3& w);
-
-/// The shadow ray from `hit` towards light sample `ls`: it starts outside the hit's error box
-/// and ends just short of the light point's error box (pushed back towards the hit), so it
-/// neither hits the surface it leaves nor the light it aims at.
-Ray spawn_shadow_ray(const SurfaceHit& hit, const LightSample& ls);
+/// The shadow ray from `hit` towards light sample `ls` (spawn_ray_to its point, or a ray in its
+/// direction for a distant light): it neither hits the surface it leaves nor the light it aims at.
+inline Ray spawn_shadow_ray(const SurfaceHit& hit, const LightSample& ls) {
+  return std::isfinite(ls.distance) ? spawn_ray_to(hit, ls.wi, ls.p, ls.p_error, ls.n)
+                                    : spawn_ray(hit, ls.wi);
+}
 
 }  // namespace pt

@@ -1,4 +1,4 @@
-#include "plot/convergence_plot.h"
+#include "framework/plot/convergence_plot.h"
 
 #include <nlohmann/json.hpp>
 
@@ -9,7 +9,7 @@
 #include <map>
 #include <sstream>
 
-#include "plot/xml_text.h"
+#include "framework/text/xml_text.h"
 
 
 namespace fs = std::filesystem;

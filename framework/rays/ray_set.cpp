@@ -1,4 +1,4 @@
-#include "rays/ray_set.h"
+#include "framework/rays/ray_set.h"
 
 #include <cmath>
 #include <cstdint>

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "math/ray.h"
+#include "framework/math/ray.h"
 
 namespace pt {
 

@@ -1,5 +1,5 @@
 // Ray set files: what is written reads back bit for bit, and broken files are refused by name.
-#include "rays/ray_set.h"
+#include "framework/rays/ray_set.h"
 
 #include <cstdio>
 #include <fstream>

@@ -1,4 +1,4 @@
-#include "render/available_memory.h"
+#include "framework/render/available_memory.h"
 
 #include <algorithm>
 #include <cstdio>

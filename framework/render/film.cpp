@@ -1,10 +1,10 @@
-#include "render/film.h"
+#include "framework/render/film.h"
 
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
 
-#include "image/estimate_exr.h"
+#include "framework/image/estimate_exr.h"
 
 namespace pt {
 

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "image/image.h"
-#include "render/pixel_stats.h"
-#include "stats/block_ttest.h"
+#include "framework/image/image.h"
+#include "framework/image/render_estimate.h"
+#include "framework/render/pixel_stats.h"
 
 namespace pt {
 

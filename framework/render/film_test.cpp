@@ -13,10 +13,10 @@
 
 #include <gtest/gtest.h>
 
-#include "image/estimate_exr.h"
-#include "image/image.h"
-#include "render/available_memory.h"
-#include "render/film.h"
+#include "framework/image/estimate_exr.h"
+#include "framework/image/image.h"
+#include "framework/render/available_memory.h"
+#include "framework/render/film.h"
 
 namespace pt {
 namespace {

@@ -1,4 +1,4 @@
-#include "render/progress.h"
+#include "framework/render/progress.h"
 
 #include <algorithm>
 #include <string>

@@ -6,7 +6,7 @@
 
 namespace pt {
 
-/// Children a node of the framework's wide BVH (framework/accel) has: the --bvh-width that asks
+/// Children a node of the wide BVH (app/accel) has: the --bvh-width that asks
 /// for it. Stated here because the settings cannot see that solution-only library.
 constexpr int kWideBvhWidth = 8;
 
@@ -36,7 +36,7 @@ struct RenderSettings {
   uint64_t seed = 0;                    ///< --seed: same seed, same image
   AccelKind accel = AccelKind::bvh_sah; ///< --bvh sah|median|none
   int bvh_leaf_size = 4;                ///< --leaf-size
-  /// --bvh-width: 2 traverses Part 2's binary tree itself; kWideBvhWidth the framework's wide tree
+  /// --bvh-width: 2 traverses Part 2's binary tree itself; kWideBvhWidth the wide tree
   /// collapsed from it (same answers, faster). The grader's Part 2 renders ask for 2.
   int bvh_width = kWideBvhWidth;
   ShadingMode shading = ShadingMode::light;

@@ -1,4 +1,4 @@
-#include "render/tile_renderer.h"
+#include "framework/render/tile_renderer.h"
 
 #include <chrono>
 #include <cmath>
@@ -10,7 +10,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
-#include "render/progress.h"
+#include "framework/render/progress.h"
 
 namespace pt {
 

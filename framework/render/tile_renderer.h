@@ -5,12 +5,12 @@
 #include <functional>
 #include <string>
 
-#include "render/film.h"
-#include "render/pixel_stats.h"
-#include "render/render_settings.h"
-#include "render/tiles.h"
-#include "render/trace_context.h"
-#include "sampling/rng.h"
+#include "framework/render/film.h"
+#include "framework/render/pixel_stats.h"
+#include "framework/render/render_settings.h"
+#include "framework/render/tiles.h"
+#include "framework/render/trace_context.h"
+#include "framework/sampling/rng.h"
 
 namespace pt {
 

@@ -1,5 +1,5 @@
 // The tile renderer: every pixel exactly once, -p cells respected, images independent of threads.
-#include "render/tile_renderer.h"
+#include "framework/render/tile_renderer.h"
 
 #include <atomic>
 #include <cmath>
@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "render/film.h"
-#include "render/tiles.h"
+#include "framework/render/film.h"
+#include "framework/render/tiles.h"
 
 namespace {
 

@@ -1,4 +1,4 @@
-#include "render/tiles.h"
+#include "framework/render/tiles.h"
 
 #include <algorithm>
 #include <stdexcept>

@@ -6,8 +6,8 @@
 
 #include <glm/vec3.hpp>
 
-#include "math/ray.h"
-#include "sampling/rng.h"
+#include "framework/math/ray.h"
+#include "framework/sampling/rng.h"
 
 namespace pt {
 

@@ -18,8 +18,8 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include "math/frame.h"
-#include "sampling/rng.h"
+#include "framework/math/frame.h"
+#include "framework/sampling/rng.h"
 
 namespace pt {
 
@@ -134,6 +134,14 @@ inline Chi2Result chi2_direction_test(const DirectionSampler& sample, const Dire
      << ", integral of pdf = " << r.pdf_integral << ", non-finite = " << r.nonfinite;
   r.summary = os.str();
   return r;
+}
+
+/// Whether a sampler passed: no non-finite sample or density, a p-value above `alpha` (0.01 is
+/// Nori's level), and a claimed density that integrates to 1 within `integral_tolerance`.
+/// r.summary says which failed.
+inline bool chi2_fits(const Chi2Result& r, double alpha = 0.01, double integral_tolerance = 2e-3) {
+  return r.nonfinite == 0 && r.p_value > alpha &&
+         std::abs(r.pdf_integral - 1.0) <= integral_tolerance;
 }
 
 }  // namespace pt

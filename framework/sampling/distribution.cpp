@@ -1,4 +1,4 @@
-#include "sampling/distribution.h"
+#include "framework/sampling/distribution.h"
 
 #include <algorithm>
 #include <cmath>
@@ -45,19 +45,9 @@ float Distribution1D::sample_continuous(float u, float* pdf, int* cell) const {
   return std::min(x, 0x1.fffffep-1f);
 }
 
-int Distribution1D::sample_discrete(float u, float* pmf) const {
-  int i = find_cell(u);
-  if (pmf) *pmf = pmf_discrete(i);
-  return i;
-}
-
 float Distribution1D::pdf_continuous(float x) const {
   int i = std::clamp(int(x * size()), 0, size() - 1);
   return func_[i] / integral_;
-}
-
-float Distribution1D::pmf_discrete(int cell) const {
-  return func_[cell] / (integral_ * float(size()));
 }
 
 Distribution2D::Distribution2D(const std::vector<float>& func, int width, int height) {

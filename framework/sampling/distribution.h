@@ -21,10 +21,7 @@ class Distribution1D {
   float integral() const { return integral_; }
   /// A point of [0,1) with density func(x)/integral; *pdf gets that density, *cell its cell.
   float sample_continuous(float u, float* pdf, int* cell = nullptr) const;
-  /// A cell index with probability weight/sum; *pmf gets that probability.
-  int sample_discrete(float u, float* pmf) const;
   float pdf_continuous(float x) const;
-  float pmf_discrete(int cell) const;
 
  private:
   int find_cell(float u) const;

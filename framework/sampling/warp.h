@@ -36,7 +36,6 @@ inline glm::vec2 square_to_uniform_disk(glm::vec2 u) {
   }
   return r * glm::vec2(std::cos(theta), std::sin(theta));
 }
-inline float uniform_disk_pdf(glm::vec2 p) { return glm::dot(p, p) <= 1.0f ? kInvPi : 0.0f; }
 
 /// Uniform direction of the hemisphere z >= 0 (density 1/2π per steradian).
 inline glm::vec3 square_to_uniform_hemisphere(glm::vec2 u) {
@@ -64,14 +63,20 @@ inline glm::vec3 square_to_uniform_sphere(glm::vec2 u) {
 }
 inline float uniform_sphere_pdf() { return kInv4Pi; }
 
-/// Uniform direction of the cone about +z of half-angle acos(cos_max) (density 1/(2π(1−cos_max))).
-inline glm::vec3 square_to_uniform_cone(glm::vec2 u, float cos_max) {
-  float z = 1.0f - u.x * (1.0f - cos_max);
+/// Uniform direction of the cone about +z whose half-angle θmax has 1 − cosθmax =
+/// `one_minus_cos_max` (density 1/(2π(1 − cosθmax))). The cone is given by 1 − cosθmax rather
+/// than cosθmax because a narrow cone (a small, far sphere light) has a cosθmax that rounds to 1,
+/// while 1 − cosθmax computed as sin²θ/(1 + cosθ) keeps its digits: its density stays finite
+/// and right.
+inline glm::vec3 square_to_uniform_cone(glm::vec2 u, float one_minus_cos_max) {
+  float z = 1.0f - u.x * one_minus_cos_max;
   float r = safe_sqrt(1.0f - z * z);
   float phi = 2.0f * kPi * u.y;
   return {r * std::cos(phi), r * std::sin(phi), z};
 }
-inline float uniform_cone_pdf(float cos_max) { return 1.0f / (2.0f * kPi * (1.0f - cos_max)); }
+inline float uniform_cone_pdf(float one_minus_cos_max) {
+  return 1.0f / (2.0f * kPi * one_minus_cos_max);
+}
 
 /// Barycentric coordinates (b0, b1, b2) of a uniform point of a triangle, by the square-root map
 /// (Turk 1990; pbrt), which keeps the fold-free mapping of the square.

@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "scene/collada_loader.h"
-#include "scene/scene_error.h"
+#include "framework/scene/collada_loader.h"
+#include "framework/scene/scene_error.h"
 
 namespace pt {
 namespace {

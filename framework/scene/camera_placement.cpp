@@ -1,4 +1,4 @@
-#include "scene/camera_placement.h"
+#include "framework/scene/camera_placement.h"
 
 #include <cmath>
 #include <stdexcept>

@@ -1,8 +1,8 @@
 // Where the course's renderer puts the camera: on the scene's centre, looking the file's way.
 #pragma once
 
-#include "math/bounds.h"
-#include "scene/camera.h"
+#include "framework/math/bounds.h"
+#include "framework/scene/camera.h"
 
 namespace pt {
 

@@ -6,7 +6,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "scene/camera_placement.h"
+#include "framework/scene/camera_placement.h"
 
 namespace pt {
 namespace {

@@ -1,5 +1,5 @@
 // Reads the course's COLLADA 1.4 dialect into a world-space Scene (see collada_loader.h).
-#include "scene/collada_loader.h"
+#include "framework/scene/collada_loader.h"
 
 #include <algorithm>
 #include <charconv>
@@ -23,7 +23,7 @@
 #include <glm/matrix.hpp>
 #include <pugixml.hpp>
 
-#include "scene/scene_error.h"
+#include "framework/scene/scene_error.h"
 
 namespace pt {
 namespace {

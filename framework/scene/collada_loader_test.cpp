@@ -1,6 +1,6 @@
 // The COLLADA loader on the course's scenes (known counts) and on a hand-made scene whose world
 // positions, normals, materials, lights and camera are worked out by hand.
-#include "scene/collada_loader.h"
+#include "framework/scene/collada_loader.h"
 
 #include <array>
 #include <chrono>
@@ -16,7 +16,7 @@
 #include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
 
-#include "scene/scene_error.h"
+#include "framework/scene/scene_error.h"
 
 namespace pt {
 namespace {

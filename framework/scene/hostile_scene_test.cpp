@@ -12,8 +12,8 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "scene/collada_loader.h"
-#include "scene/scene_error.h"
+#include "framework/scene/collada_loader.h"
+#include "framework/scene/scene_error.h"
 
 namespace pt {
 namespace {

@@ -1,4 +1,4 @@
-#include "scene/scene.h"
+#include "framework/scene/scene.h"
 
 namespace pt {
 

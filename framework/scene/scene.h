@@ -7,10 +7,10 @@
 
 #include <glm/vec3.hpp>
 
-#include "math/bounds.h"
-#include "scene/camera.h"
-#include "scene/light.h"
-#include "scene/material.h"
+#include "framework/math/bounds.h"
+#include "framework/scene/camera.h"
+#include "framework/scene/light.h"
+#include "framework/scene/material.h"
 
 namespace pt {
 

@@ -1,4 +1,4 @@
-#include "scene/scene_summary.h"
+#include "framework/scene/scene_summary.h"
 
 #include <algorithm>
 #include <cmath>

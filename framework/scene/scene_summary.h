@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "scene/scene.h"
+#include "framework/scene/scene.h"
 
 namespace pt {
 

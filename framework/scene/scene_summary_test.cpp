@@ -1,5 +1,5 @@
 // The scene summary (pathtracer --info) and the one-line material fallback warning.
-#include "scene/scene_summary.h"
+#include "framework/scene/scene_summary.h"
 
 #include <string>
 

@@ -1,4 +1,4 @@
-#include "stats/allocation_bound.h"
+#include "framework/stats/allocation_bound.h"
 
 #include <cmath>
 #include <limits>

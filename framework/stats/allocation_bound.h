@@ -4,9 +4,9 @@
 
 #include <vector>
 
-#include "image/image.h"
-#include "stats/block_ttest.h"
-#include "stats/image_error.h"
+#include "framework/image/image.h"
+#include "framework/image/render_estimate.h"
+#include "framework/stats/image_error.h"
 
 namespace pt {
 

@@ -1,5 +1,5 @@
 // The allocation bound against cases worked by hand and against allocations tried one by one.
-#include "stats/allocation_bound.h"
+#include "framework/stats/allocation_bound.h"
 
 #include <cmath>
 #include <limits>

@@ -1,5 +1,5 @@
 // The block t-test: Welch's test per block and channel, Bonferroni over all of them.
-#include "stats/block_ttest.h"
+#include "framework/stats/block_ttest.h"
 
 #include <algorithm>
 #include <cmath>

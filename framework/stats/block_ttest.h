@@ -6,16 +6,9 @@
 
 #include <glm/vec3.hpp>
 
-namespace pt {
+#include "framework/image/render_estimate.h"
 
-/// A render as an estimator: per pixel, the mean of its samples, the sample variance of one
-/// sample, and how many samples were taken (row-major, top row first).
-struct RenderEstimate {
-  int width = 0, height = 0;
-  std::vector<glm::vec3> mean;
-  std::vector<glm::vec3> variance;
-  std::vector<float> count;
-};
+namespace pt {
 
 struct BlockTestOptions {
   int block_size = 16;   ///< blocks are block_size × block_size pixels (edge blocks smaller)

@@ -1,14 +1,14 @@
 // The block t-test on synthetic renders whose truth is known: the same truth with other random
 // numbers passes at the stated rate, a biased one fails, broken input fails.
-#include "stats/block_ttest.h"
+#include "framework/stats/block_ttest.h"
 
 #include <cmath>
 #include <limits>
 
 #include <gtest/gtest.h>
 
-#include "render/pixel_stats.h"
-#include "sampling/rng.h"
+#include "framework/render/pixel_stats.h"
+#include "framework/sampling/rng.h"
 
 namespace pt {
 namespace {

@@ -1,4 +1,4 @@
-#include "stats/image_error.h"
+#include "framework/stats/image_error.h"
 
 #include <cmath>
 #include <stdexcept>

@@ -2,7 +2,7 @@
 // convergence study.
 #pragma once
 
-#include "image/image.h"
+#include "framework/image/image.h"
 
 namespace pt {
 

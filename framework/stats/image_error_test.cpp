@@ -1,5 +1,5 @@
 // Relative MSE and RMSE on images whose errors are known by hand.
-#include "stats/image_error.h"
+#include "framework/stats/image_error.h"
 
 #include <cmath>
 #include <limits>

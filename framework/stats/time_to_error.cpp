@@ -1,4 +1,4 @@
-#include "stats/time_to_error.h"
+#include "framework/stats/time_to_error.h"
 
 #include <algorithm>
 #include <cmath>

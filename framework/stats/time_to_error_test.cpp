@@ -1,5 +1,5 @@
 // Time to reach an error, interpolated on log-log axes between measured points.
-#include "stats/time_to_error.h"
+#include "framework/stats/time_to_error.h"
 
 #include <cmath>
 

@@ -10,9 +10,9 @@
 
 #include <gtest/gtest.h>
 
-#include "scene/collada_loader.h"
-#include "scene/scene_error.h"
-#include "scene_invariants.h"
+#include "framework/scene/collada_loader.h"
+#include "framework/scene/scene_error.h"
+#include "fuzz/scene_invariants.h"
 
 namespace pt {
 namespace {

@@ -1,6 +1,6 @@
 // The grader's comparison of a render with its reference: other random numbers pass, each usual
 // mistake fails with a message that names it, and a diff image is written.
-#include "compare.h"
+#include "grader/compare.h"
 
 #include <cmath>
 #include <filesystem>
@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "synthetic.h"
+#include "grader/tests/synthetic.h"
 
 namespace pt::grader {
 namespace {

@@ -1,6 +1,6 @@
 // Grading renders through a stand-in renderer: a good render passes, one that crashes, hangs
 // or writes garbage fails alone, and a reference that does not match its checksum is refused.
-#include "grade.h"
+#include "grader/grade.h"
 
 #include <unistd.h>
 
@@ -9,9 +9,9 @@
 
 #include <gtest/gtest.h>
 
-#include "image/estimate_exr.h"
-#include "report.h"
-#include "synthetic.h"
+#include "framework/image/estimate_exr.h"
+#include "grader/report.h"
+#include "grader/tests/synthetic.h"
 
 namespace fs = std::filesystem;
 

@@ -1,5 +1,5 @@
 // The handout's stripping of solution blocks.
-#include "handout.h"
+#include "grader/handout.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // The score table and the Gradescope results: totals, failure messages, the documented shape.
-#include "report.h"
+#include "grader/report.h"
 
 #include <sstream>
 

@@ -7,9 +7,9 @@
 
 #include <glm/vec3.hpp>
 
-#include "render/pixel_stats.h"
-#include "sampling/rng.h"
-#include "stats/block_ttest.h"
+#include "framework/render/pixel_stats.h"
+#include "framework/sampling/rng.h"
+#include "framework/stats/block_ttest.h"
 
 namespace pt::grader::testing {
 

@@ -1,4 +1,5 @@
-#include "1-raygen/camera_ray.h"
+// Part 1, step 1 (camera_ray): generate_camera_ray.
+#include "parts/1-raygen/camera_ray.h"
 
 #include <cmath>
 #include <limits>
@@ -7,7 +8,7 @@
 #include <glm/gtc/constants.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "student/todo.h"
+#include "framework/student/todo.h"
 
 namespace pt {
 

@@ -1,10 +1,10 @@
-// Part 1, step 1: the ray a camera shoots through a point of its image.
+// Part 1, step 1 (camera_ray): the ray a camera shoots through a point of its image.
 #pragma once
 
 #include <glm/vec2.hpp>
 
-#include "math/ray.h"
-#include "scene/camera.h"
+#include "framework/math/ray.h"
+#include "framework/scene/camera.h"
 
 namespace pt {
 

@@ -1,27 +1,41 @@
-#include "1-raygen/pixel_loop.h"
+// Part 1, step 2 (pixel_loop): camera_ray_through_pixel, estimate_pixel.
+#include "parts/1-raygen/pixel_loop.h"
 
-#include "1-raygen/camera_ray.h"
-#include "student/todo.h"
+#include "framework/student/todo.h"
+#include "parts/1-raygen/camera_ray.h"
 
 namespace pt {
+
+Ray camera_ray_through_pixel(const Camera& camera, const PixelRef& px, glm::vec2 offset,
+                             glm::vec2 lens) {
+  // BEGIN SOLUTION
+  const float aspect = float(px.width) / float(px.height);
+  // Rows count down from the top, the film up from the bottom.
+  const glm::vec2 film((float(px.x) + offset.x) / float(px.width),
+                       1.0f - (float(px.y) + offset.y) / float(px.height));
+  return generate_camera_ray(camera, aspect, film, lens);
+  // END SOLUTION
+  // STUDENT: turn the point of the pixel into film coordinates ((0,0) is the image's
+  // bottom-left corner, (1,1) its top-right; pixel rows count from the top) and return
+  // generate_camera_ray through it, for an image of aspect px.width / px.height.
+  PT_STUDENT_TODO("part 1", "camera_ray_through_pixel");
+  (void)camera, (void)px, (void)offset, (void)lens;
+  return Ray{};
+}
 
 void estimate_pixel(const Camera& camera, const PixelRef& px, int samples, Rng& rng,
                     const RadianceFn& radiance, PixelStats* stats) {
   // BEGIN SOLUTION
-  const float aspect = float(px.width) / float(px.height);
   for (int i = 0; i < samples; ++i) {
     const glm::vec2 offset = (samples == 1) ? glm::vec2(0.5f) : rng.next_2d();
-    // Rows count down from the top, the film up from the bottom.
-    const glm::vec2 film((float(px.x) + offset.x) / float(px.width),
-                         1.0f - (float(px.y) + offset.y) / float(px.height));
     const glm::vec2 lens = (camera.lens_radius > 0.0f) ? rng.next_2d() : glm::vec2(0.5f);
-    stats->add(radiance(generate_camera_ray(camera, aspect, film, lens), rng));
+    stats->add(radiance(camera_ray_through_pixel(camera, px, offset, lens), rng));
   }
   return;
   // END SOLUTION
   // STUDENT: for each sample pick a point in the pixel (its centre when samples == 1, a uniform
-  // random point otherwise), turn it into film coordinates ((0,0) bottom-left: rows count from
-  // the top), shoot generate_camera_ray through it and add its radiance to *stats.
+  // random point otherwise, rng.next_2d()), then a lens sample (rng.next_2d() when the camera has
+  // a lens), shoot camera_ray_through_pixel and add its radiance to *stats.
   PT_STUDENT_TODO("part 1", "estimate_pixel");
   (void)camera, (void)px, (void)samples, (void)rng, (void)radiance;
   stats->add(glm::vec3(0.0f));

@@ -1,11 +1,12 @@
-#include "1-raygen/sphere_intersect.h"
+// Part 1, step 4 (sphere): intersect_sphere.
+#include "parts/1-raygen/sphere_intersect.h"
 
 #include <cmath>
 #include <utility>
 
 #include <glm/geometric.hpp>
 
-#include "student/todo.h"
+#include "framework/student/todo.h"
 
 namespace pt {
 

@@ -1,8 +1,8 @@
-// Part 1, step 3: where a ray meets a sphere, with a quadratic that does not cancel.
+// Part 1, step 4 (sphere): where a ray meets a sphere, with a quadratic that does not cancel.
 #pragma once
 
-#include "math/ray.h"
-#include "scene/scene.h"
+#include "framework/math/ray.h"
+#include "framework/scene/scene.h"
 
 namespace pt {
 

@@ -1,4 +1,5 @@
-#include "1-raygen/triangle_intersect.h"
+// Part 1, step 3 (triangle): intersect_triangle, interpolate_normal.
+#include "parts/1-raygen/triangle_intersect.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +7,8 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
-#include "math/float_error.h"
-#include "student/todo.h"
+#include "framework/math/float_error.h"
+#include "framework/student/todo.h"
 
 namespace pt {
 

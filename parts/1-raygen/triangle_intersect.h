@@ -1,10 +1,11 @@
-// Part 1, step 2: where a ray meets a triangle, watertight.
+// Part 1, step 3 (triangle): where a ray meets a triangle, watertight, and the shading normal
+// at the hit.
 #pragma once
 
 #include <glm/vec3.hpp>
 
-#include "geometry/surface_hit.h"
-#include "math/ray.h"
+#include "framework/geometry/surface_hit.h"
+#include "framework/math/ray.h"
 
 namespace pt {
 

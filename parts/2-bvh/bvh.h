@@ -1,4 +1,7 @@
-// Part 2: a bounding volume hierarchy over a scene's primitives, and the ray queries through it.
+// Part 2, step 3 (traversal): a bounding volume hierarchy over a scene's primitives, and the ray
+// queries through it. The student writes Bvh::traverse_nearest and Bvh::occluded
+// (bvh_traverse.cpp); the construction and Bvh::intersect are given (pipeline/2-bvh/), and so are
+// the leaf tests they call (pipeline/1-raygen/leaf_primitives.h).
 #pragma once
 
 #include <cstdint>
@@ -6,10 +9,12 @@
 
 #include <glm/vec3.hpp>
 
-#include "2-bvh/bvh_split.h"
-#include "2-bvh/ray_box.h"
-#include "geometry/ray_query.h"
-#include "scene/scene.h"
+#include "framework/geometry/ray_query.h"
+#include "framework/scene/scene.h"
+#include "parts/2-bvh/bvh_split.h"
+#include "parts/2-bvh/ray_box.h"
+#include "pipeline/1-raygen/leaf_primitives.h"
+#include "pipeline/1-raygen/nearest_hit_query.h"
 
 namespace pt {
 
@@ -53,8 +58,8 @@ struct BvhStats {
 /// A binary BVH over every primitive of a scene (triangles and spheres), answering the same
 /// queries as BruteForce with the same answers: the nearest hit (ties go to the lower primitive
 /// index, as brute force's order gives them) and whether anything occludes a ray. The scene must
-/// outlive the BVH. Leaves keep copies of their triangles' corners (bit-identical to the scene's),
-/// so a leaf's triangles are read from one contiguous block.
+/// outlive the BVH. Leaves keep copies of their triangles' corners (LeafPrimitives), so a leaf's
+/// triangles are read from one contiguous block.
 class Bvh final : public RayQuery {
  public:
   explicit Bvh(const Scene& scene, const BvhOptions& options = {});
@@ -65,29 +70,34 @@ class Bvh final : public RayQuery {
   const BvhStats& stats() const { return stats_; }
   const std::vector<BvhNode>& nodes() const { return nodes_; }
   /// Primitive indices in leaf order: leaf node n holds order()[n.offset .. n.offset + n.count).
-  const std::vector<uint32_t>& order() const { return order_; }
+  const std::vector<uint32_t>& order() const { return leaves_.order; }
 
   static constexpr int kMaxLeafSize = 255;
   /// Deeper than this the build splits by count, so no traversal stack can overflow.
   static constexpr int kMaxDepth = 96;
 
  private:
-  /// The corners of a triangle in leaf order (unused for a sphere's entry).
-  struct TriangleCorners {
-    glm::vec3 p0, p1, p2;
+  /// A nearest-hit query through this tree: the leaf tests' state (pipeline/1-raygen), and the
+  /// ray prepared for box tests.
+  struct NearestState : NearestHitQuery {
+    explicit NearestState(const Ray& ray_) : NearestHitQuery(ray_), box(ray_) {}
+    BoxRay box;
   };
-  struct NearestState;
 
   /// The student's nearest-first walk: visits leaves through intersect_leaf until no node left
   /// can hold a nearer hit. intersect() makes the SurfaceHit of the winner afterwards.
   void traverse_nearest(NearestState* state) const;
-  void intersect_leaf(const BvhNode& leaf, NearestState* state) const;
-  bool leaf_occludes(const BvhNode& leaf, const Ray& ray) const;
+  /// The leaf tests, for a node of this tree.
+  void intersect_leaf(const BvhNode& leaf, NearestState* state) const {
+    pt::intersect_leaf(scene_, leaves_, leaf.offset, leaf.count, state);
+  }
+  bool leaf_occludes(const BvhNode& leaf, const Ray& ray) const {
+    return pt::leaf_occludes(scene_, leaves_, leaf.offset, leaf.count, ray);
+  }
 
   const Scene& scene_;
   std::vector<BvhNode> nodes_;
-  std::vector<uint32_t> order_;
-  std::vector<TriangleCorners> corners_;
+  LeafPrimitives leaves_;
   BvhStats stats_;
 
   friend class BvhBuilder;

@@ -1,6 +1,7 @@
-#include "2-bvh/bvh_split.h"
+// Part 2, step 2 (split): midpoint_split, best_sah_split.
+#include "parts/2-bvh/bvh_split.h"
 
-#include "student/todo.h"
+#include "framework/student/todo.h"
 
 namespace pt {
 

@@ -1,10 +1,11 @@
-// Part 2, step 2: where a BVH node splits its primitives (midpoint, or the surface area heuristic).
+// Part 2, step 2 (split): where a BVH node splits its primitives (midpoint, or the surface area
+// heuristic).
 #pragma once
 
 #include <cstdint>
 #include <limits>
 
-#include "math/bounds.h"
+#include "framework/math/bounds.h"
 
 namespace pt {
 

@@ -1,115 +1,11 @@
-// BVH traversal: the student's two loops (nearest hit, any hit) and the leaf plumbing they call.
-#include <algorithm>
-#include <cmath>
+// Part 2, step 3 (traversal): the student's two loops through the tree, Bvh::traverse_nearest
+// (nearest hit) and Bvh::occluded (any hit); the leaf tests they call are given.
 #include <utility>
 
-#include "1-raygen/scene_intersect.h"
-#include "1-raygen/triangle_intersect.h"
-#include "2-bvh/bvh.h"
-#include "math/float_error.h"
-#include "student/todo.h"
+#include "framework/student/todo.h"
+#include "parts/2-bvh/bvh.h"
 
 namespace pt {
-
-/// A nearest-hit query in flight. The answer is the smallest t any primitive reports for the
-/// ray's own interval, the lower primitive index winning a tie: a definition that does not depend
-/// on the order primitives are visited in, so the BVH, visiting them in its own order, gives
-/// brute force's answer (Part1's intersect_triangle compares t·det with tmax·det, so whether a
-/// hit an ulp short of tmax counts can depend on tmax's rounding: primitives are therefore judged
-/// on the t they report, never on a shrunken tmax).
-///
-/// What shrinks is only the bound boxes and triangles are culled by: the best t stretched by
-/// kHitDistanceSlack, so a rival an ulp or two nearer in another leaf is still compared. It costs
-/// a few more box tests near ties, nothing else.
-///
-/// During the walk a triangle is only (primitive, t): the SurfaceHit (point, error bound,
-/// normals, material) is made once, for the winner, after the walk.
-struct Bvh::NearestState {
-  explicit NearestState(const Ray& ray_) : ray(ray_), cull(ray_), box(ray_) {}
-  const Ray& ray;
-  Ray cull;  ///< the ray with tmax = the culling bound
-  BoxRay box;
-  uint32_t best = UINT32_MAX;  ///< primitive of the best hit, UINT32_MAX while there is none
-  float best_t = 0.0f;
-  /// Make every candidate's SurfaceHit as it is found, so one Part 1 refuses to shade is never
-  /// the best (the rare second pass of intersect()).
-  bool in_full = false;
-  bool hit_made = false;  ///< `hit` is the best's SurfaceHit already (spheres; the second pass)
-  SurfaceHit hit;
-  /// A best triangle's t and barycentrics as its test reported them, from which intersect() makes
-  /// its SurfaceHit without testing it a second time.
-  TriangleHit best_triangle;
-
-  bool found() const { return best != UINT32_MAX; }
-  bool beats_best(float t, uint32_t prim) const {
-    return !found() || t < best_t || (t == best_t && prim < best);
-  }
-  void take(float t, uint32_t prim, bool made) {
-    best = prim;
-    best_t = t;
-    hit_made = made;
-    cull.tmax = std::min(ray.tmax, t + std::abs(t) * (kHitDistanceSlack - 1.0f));
-  }
-};
-
-void Bvh::intersect_leaf(const BvhNode& leaf, NearestState* st) const {
-  for (uint32_t i = leaf.offset, end = leaf.offset + leaf.count; i < end; ++i) {
-    const uint32_t prim = order_[i];
-    if (scene_.is_triangle(prim) && !st->in_full) {
-      // The leaf's own copy of the corners is bit-identical to the scene's, so t is the very t
-      // brute force's intersect_primitive reports.
-      TriangleHit th;
-      const TriangleCorners& c = corners_[i];
-      if (intersect_triangle(st->cull, c.p0, c.p1, c.p2, &th) && st->beats_best(th.t, prim)) {
-        st->take(th.t, prim, false);
-        st->best_triangle = th;
-      }
-      continue;
-    }
-    SurfaceHit h;
-    if (!intersect_primitive(scene_, prim, st->ray, &h) || !st->beats_best(h.t, prim)) continue;
-    st->hit = h;
-    st->take(h.t, prim, true);
-  }
-}
-
-bool Bvh::leaf_occludes(const BvhNode& leaf, const Ray& ray) const {
-  for (uint32_t i = leaf.offset, end = leaf.offset + leaf.count; i < end; ++i) {
-    const uint32_t prim = order_[i];
-    if (scene_.is_triangle(prim)) {
-      TriangleHit th;
-      const TriangleCorners& c = corners_[i];
-      if (intersect_triangle(ray, c.p0, c.p1, c.p2, &th)) return true;
-    } else if (primitive_occludes(scene_, prim, ray)) {
-      return true;
-    }
-  }
-  return false;
-}
-
-bool Bvh::intersect(const Ray& ray, SurfaceHit* hit) const {
-  // A ray with a NaN or infinite component is a miss before the walk (is_traceable).
-  if (nodes_.empty() || !is_traceable(ray)) return false;
-  NearestState st(ray);
-  traverse_nearest(&st);
-  if (!st.found()) return false;
-  if (st.hit_made) {
-    *hit = st.hit;
-    return true;
-  }
-  // The winner is a triangle (spheres are made as they are found): its t and barycentrics are
-  // the ones brute force's intersect_primitive gets (the same corners; a nearer tmax changes
-  // which hits count, not their values), so its SurfaceHit is made from them directly.
-  if (triangle_surface_hit(scene_, st.best, st.best_triangle, hit)) return true;
-  // Part 1 refuses to shade the winner (a triangle too thin in float to have a normal), so brute
-  // force never saw it: walk again making each candidate in full, as brute force does.
-  NearestState careful(ray);
-  careful.in_full = true;
-  traverse_nearest(&careful);
-  if (!careful.found()) return false;
-  *hit = careful.hit;
-  return true;
-}
 
 void Bvh::traverse_nearest(NearestState* state) const {
   NearestState& st = *state;

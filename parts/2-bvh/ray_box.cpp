@@ -1,9 +1,10 @@
-#include "2-bvh/ray_box.h"
+// Part 2, step 1 (ray_box): intersect_box.
+#include "parts/2-bvh/ray_box.h"
 
 #include <cmath>
 
-#include "math/float_error.h"
-#include "student/todo.h"
+#include "framework/math/float_error.h"
+#include "framework/student/todo.h"
 
 namespace pt {
 

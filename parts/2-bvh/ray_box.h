@@ -1,18 +1,13 @@
-// Part 2, step 1: whether a ray passes through an axis-aligned box, conservatively.
+// Part 2, step 1 (ray_box): whether a ray passes through an axis-aligned box, conservatively.
 #pragma once
 
 #include <glm/vec3.hpp>
 
-#include "math/bounds.h"
-#include "math/float_error.h"
-#include "math/ray.h"
+#include "framework/math/bounds.h"
+#include "framework/math/float_error.h"
+#include "framework/math/ray.h"
 
 namespace pt {
-
-/// How far past the nearest hit so far a nearest-hit traversal still looks: a hit's reported t
-/// and a box's entry distance each stray from exact by a few ulps (unless the ray grazes the
-/// surface), so a rival an ulp nearer in another box must not be culled before it is compared.
-inline constexpr float kHitDistanceSlack = 1.0f + 2.0f * gamma(16);
 
 /// A ray prepared once for many box tests: the reciprocal of its direction, so a slab test costs
 /// multiplications only. A zero component gives an infinite reciprocal, which the slab test

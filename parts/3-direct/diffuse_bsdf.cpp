@@ -1,7 +1,8 @@
-#include "3-direct/diffuse_bsdf.h"
+// Part 3, step 1 (diffuse_bsdf): DiffuseBsdf::f, DiffuseBsdf::sample_f.
+#include "parts/3-direct/diffuse_bsdf.h"
 
-#include "sampling/warp.h"
-#include "student/todo.h"
+#include "framework/sampling/warp.h"
+#include "framework/student/todo.h"
 
 namespace pt {
 

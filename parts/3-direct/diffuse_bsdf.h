@@ -1,9 +1,10 @@
-// Part 3, step 1: the diffuse (Lambertian) BSDF, which scatters light equally in every direction.
+// Part 3, step 1 (diffuse_bsdf): the diffuse (Lambertian) BSDF, which scatters light equally in
+// every direction.
 #pragma once
 
 #include <glm/vec3.hpp>
 
-#include "bsdf/bsdf.h"
+#include "framework/bsdf/bsdf.h"
 
 namespace pt {
 

@@ -1,9 +1,11 @@
-#include "3-direct/direct_lighting.h"
+// Part 3, steps 2-5: zero_bounce_radiance (zero_bounce), estimate_direct_hemisphere
+// (hemisphere), estimate_direct_importance (importance), one_bounce_radiance (one_bounce).
+#include "parts/3-direct/direct_lighting.h"
 
 #include <algorithm>
 
-#include "sampling/warp.h"
-#include "student/todo.h"
+#include "framework/sampling/warp.h"
+#include "framework/student/todo.h"
 
 namespace pt {
 

@@ -1,12 +1,22 @@
 // Part 3: light that reaches the camera straight from an emitter, or after one reflection.
+// Step 2 (zero_bounce): zero_bounce_radiance; step 3 (hemisphere): estimate_direct_hemisphere;
+// step 4 (importance): estimate_direct_importance; step 5 (one_bounce): one_bounce_radiance.
 #pragma once
 
 #include <glm/vec3.hpp>
 
-#include "3-direct/shading_point.h"
-#include "sampling/rng.h"
+#include "framework/geometry/surface_hit.h"
+#include "framework/math/ray.h"
+#include "framework/sampling/rng.h"
+#include "framework/shading/lighting_context.h"
+#include "framework/shading/shading_point.h"
+#include "parts/3-direct/diffuse_bsdf.h"
 
 namespace pt {
+
+/// A surface point made ready for shading, its diffuse materials drawn by Part 3's DiffuseBsdf
+/// (the framework's ShadingPointWith cannot name the student's type itself).
+using ShadingPoint = ShadingPointWith<DiffuseBsdf>;
 
 /// Light the surface hit by `ray` emits back along it (zero-bounce radiance).
 glm::vec3 zero_bounce_radiance(const LightingContext& ctx, const Ray& ray, const SurfaceHit& hit);

@@ -1,14 +1,17 @@
-#include "4-global/global_illumination.h"
+// Part 4, step 1 (path): estimate_global_illumination; steps 2 (bounces) and 3
+// (russian_roulette): at_least_one_bounce_radiance.
+#include "parts/4-global/global_illumination.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "3-direct/direct_lighting.h"
-#include "4-global/mis.h"
-#include "student/todo.h"
+#include "framework/student/todo.h"
+#include "parts/3-direct/direct_lighting.h"
+#include "parts/4-global/mis.h"
 
 namespace pt {
 
+// Given, not a step: the choice between step 4's MIS and Part 3's estimate, as the settings ask.
 glm::vec3 direct_radiance(const LightingContext& ctx, const ShadingPoint& sp, Rng& rng) {
   return ctx.mis ? estimate_direct_mis(ctx, sp, rng) : one_bounce_radiance(ctx, sp, rng);
 }

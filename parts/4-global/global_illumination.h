@@ -1,11 +1,13 @@
 // Part 4: global illumination, light that reaches the camera after any number of bounces.
+// Step 1 (path): estimate_global_illumination; steps 2 (bounces) and 3 (russian_roulette):
+// at_least_one_bounce_radiance.
 #pragma once
 
 #include <glm/vec3.hpp>
 
-#include "3-direct/shading_point.h"
-#include "math/ray.h"
-#include "sampling/rng.h"
+#include "framework/math/ray.h"
+#include "framework/sampling/rng.h"
+#include "parts/3-direct/direct_lighting.h"
 
 namespace pt {
 

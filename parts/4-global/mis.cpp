@@ -1,23 +1,33 @@
-#include "4-global/mis.h"
+// Part 4, step 4 (mis): power_heuristic, estimate_direct_mis.
+#include "parts/4-global/mis.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "3-direct/direct_lighting.h"
+#include "framework/student/todo.h"
+#include "parts/3-direct/direct_lighting.h"
 
 namespace pt {
 
 float power_heuristic(int n_a, float pdf_a, int n_b, float pdf_b) {
+  // BEGIN SOLUTION
   float a = float(n_a) * pdf_a, b = float(n_b) * pdf_b;
   if (std::isinf(a * a)) return 1.0f;
   float denom = a * a + b * b;
   return denom > 0.0f ? (a * a) / denom : 0.0f;
+  // END SOLUTION
+  // STUDENT: with a = n_a·pdf_a and b = n_b·pdf_b, return a² / (a² + b²); 0 when both are 0,
+  // and 1 when a² overflows to infinity (a sample only strategy a could have drawn).
+  PT_STUDENT_TODO("part 4", "power_heuristic");
+  (void)n_a, (void)pdf_a, (void)n_b, (void)pdf_b;
+  return 0.0f;
 }
 
 namespace {
 
-// Whether a BSDF-sampled ray can reach light l at all.
-bool hittable(const SampledLight& l) {
+// Whether a BSDF-sampled ray can reach light l at all (given: which lights the LightSet can also
+// meet along a ray is a fact of the light set, not of MIS).
+[[maybe_unused]] bool hittable(const SampledLight& l) {
   if (l.is_delta()) return false;
   if (l.kind == SampledLightKind::parallelogram) return l.has_panel;
   return true;
@@ -26,6 +36,7 @@ bool hittable(const SampledLight& l) {
 }  // namespace
 
 glm::vec3 estimate_direct_mis(const LightingContext& ctx, const ShadingPoint& sp, Rng& rng) {
+  // BEGIN SOLUTION
   if (sp.bsdf->is_delta()) return glm::vec3(0.0f);
   const auto& lights = ctx.lights.lights();
   const int ns = std::max(1, ctx.light_samples);
@@ -70,6 +81,15 @@ glm::vec3 estimate_direct_mis(const LightingContext& ctx, const ShadingPoint& sp
     }
   }
   return L + sum / float(ns);
+  // END SOLUTION
+  // STUDENT: zero for a specular BSDF. Light samples as in estimate_direct_importance, each
+  // weighted by power_heuristic(n, ls.pdf, ns, sp.bsdf->pdf(sp.wo, wi)) where the light is
+  // hittable (else weight 1); then ns = ctx.light_samples BSDF samples (sp.bsdf->sample_f), each
+  // ray's light (ctx.lights.light_of_primitive of its hit, or every infinite light when it
+  // escapes) weighted by power_heuristic(ns, pdf_bsdf, n, ctx.lights.pdf(...)) times
+  // ctx.lights.emitted(...). Until then, Part 3's estimate stands in, so renders keep running.
+  PT_STUDENT_TODO("part 4", "estimate_direct_mis");
+  return one_bounce_radiance(ctx, sp, rng);
 }
 
 }  // namespace pt

@@ -1,10 +1,11 @@
-// Beyond the course: direct light by multiple importance sampling of lights and of the BSDF.
+// Part 4, step 4 (mis), beyond the course: direct light by multiple importance sampling of lights
+// and of the BSDF (power_heuristic, estimate_direct_mis).
 #pragma once
 
 #include <glm/vec3.hpp>
 
-#include "3-direct/shading_point.h"
-#include "sampling/rng.h"
+#include "framework/sampling/rng.h"
+#include "parts/3-direct/direct_lighting.h"
 
 namespace pt {
 

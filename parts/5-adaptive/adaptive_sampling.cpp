@@ -1,21 +1,11 @@
-#include "5-adaptive/adaptive_sampling.h"
+// Part 5, step 1 (convergence): pixel_converged; step 2 (adaptive_loop): sample_pixel_adaptive.
+#include "parts/5-adaptive/adaptive_sampling.h"
 
 #include <cmath>
 
-#include "1-raygen/camera_ray.h"
-#include "student/todo.h"
+#include "framework/student/todo.h"
 
 namespace pt {
-
-Ray jittered_pixel_ray(const Camera& camera, const PixelRef& px, Rng& rng) {
-  const float aspect = float(px.width) / float(px.height);
-  const glm::vec2 jitter = rng.next_2d();
-  // Rows count down from the top, the film up from the bottom.
-  const glm::vec2 film((float(px.x) + jitter.x) / float(px.width),
-                       1.0f - (float(px.y) + jitter.y) / float(px.height));
-  const glm::vec2 lens = (camera.lens_radius > 0.0f) ? rng.next_2d() : glm::vec2(0.5f);
-  return generate_camera_ray(camera, aspect, film, lens);
-}
 
 bool pixel_converged(const IlluminanceStats& decision, long estimate_count, float tolerance) {
   // BEGIN SOLUTION
@@ -34,8 +24,7 @@ bool pixel_converged(const IlluminanceStats& decision, long estimate_count, floa
 // The pixel's value is the mean of the estimate samples up to a stopping time that depends only
 // on the decision samples, which are independent of them: conditioned on when it stops, that
 // mean is still a mean of independent samples, so its expectation is the pixel's true value.
-int sample_pixel_adaptive(const Camera& camera, const PixelRef& px,
-                          const AdaptiveSettings& settings, Rng& rng, const RadianceFn& radiance,
+int sample_pixel_adaptive(const AdaptiveSettings& settings, const PixelSampleFn& next_sample,
                           PixelStats* estimate) {
   // BEGIN SOLUTION
   const int batch = settings.batch < 1 ? 1 : settings.batch;
@@ -43,7 +32,7 @@ int sample_pixel_adaptive(const Camera& camera, const PixelRef& px,
   int taken = 0;
   while (taken < settings.max_samples) {
     for (int i = 0; i < batch && taken < settings.max_samples; ++i, ++taken) {
-      glm::vec3 L = radiance(jittered_pixel_ray(camera, px, rng), rng);
+      glm::vec3 L = next_sample();
       if (is_decision_sample(taken))
         decision.add(illuminance(L));
       else
@@ -53,25 +42,15 @@ int sample_pixel_adaptive(const Camera& camera, const PixelRef& px,
   }
   return taken;
   // END SOLUTION
-  // STUDENT: take samples in batches of settings.batch, each the radiance along
-  // jittered_pixel_ray. Sample number `taken` (from 0) goes only into an IlluminanceStats of
+  // STUDENT: take samples in batches of settings.batch, each the radiance next_sample()
+  // returns. Sample number `taken` (from 0) goes only into an IlluminanceStats of
   // decision samples when is_decision_sample(taken), otherwise only into *estimate. After each
   // batch stop if pixel_converged(decision, estimate->count, ...) says so. Never take more than
   // settings.max_samples. Return how many samples you took, decision samples included.
   PT_STUDENT_TODO("part 5", "sample_pixel_adaptive");
-  (void)camera, (void)px, (void)settings, (void)rng, (void)radiance;
+  (void)settings, (void)next_sample;
   estimate->add(glm::vec3(0.0f));
   return 1;
-}
-
-int estimate_pixel_adaptive(const Camera& camera, const PixelRef& px,
-                            const AdaptiveSettings& settings, Rng& rng,
-                            const RadianceFn& radiance, PixelStats* stats) {
-  const long before = stats->count;
-  const int taken = sample_pixel_adaptive(camera, px, settings, rng, radiance, stats);
-  const long kept_out = long(taken) - (stats->count - before);
-  if (kept_out > 0) stats->decision_samples += kept_out;
-  return taken;
 }
 
 }  // namespace pt

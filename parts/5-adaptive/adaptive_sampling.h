@@ -1,29 +1,15 @@
 // Part 5: per-pixel adaptive sampling — stop taking samples once a pixel has converged.
+// Step 1 (convergence): pixel_converged; step 2 (adaptive_loop): sample_pixel_adaptive.
 #pragma once
 
-#include "1-raygen/pixel_loop.h"
-#include "render/pixel_stats.h"
+#include <functional>
+
+#include <glm/vec3.hpp>
+
+#include "framework/render/pixel_stats.h"
+#include "framework/stats/illuminance_stats.h"
 
 namespace pt {
-
-/// Running mean and variance of a pixel's sample illuminances. Welford's update in double: the
-/// course's Σx and Σx² in float lose every significant digit of the variance for a bright pixel
-/// whose samples barely differ (Σx² and (Σx)²/n agree in all the digits a float keeps), and
-/// then a noisy pixel looks converged or a converged one never stops.
-struct IlluminanceStats {
-  long count = 0;
-  double mean = 0.0;
-  double m2 = 0.0;  ///< sum of squared deviations from the mean
-
-  void add(double x) {
-    ++count;
-    double delta = x - mean;
-    mean += delta / double(count);
-    m2 += delta * (x - mean);
-  }
-  /// Unbiased sample variance (0 with fewer than two samples).
-  double variance() const { return count > 1 ? m2 / double(count - 1) : 0.0; }
-};
 
 /// One sample in kDecisionStride of a pixel decides when to stop and never enters the pixel's
 /// value; the others form the value and never take part in the decision. The course's rule
@@ -44,13 +30,10 @@ struct AdaptiveSettings {
   float tolerance = 0.05f; ///< -a TOL: stop when the 95% confidence half-width ≤ TOL · mean
 };
 
-/// Photometric illuminance of a linear RGB radiance (Rec. 709 primaries).
-inline double illuminance(const glm::vec3& rgb) {
-  return 0.2126 * rgb.x + 0.7152 * rgb.y + 0.0722 * rgb.z;
-}
 
-/// The camera ray through a uniformly jittered point of pixel `px` (and of the lens, if any).
-Ray jittered_pixel_ray(const Camera& camera, const PixelRef& px, Rng& rng);
+/// The radiance of one more sample of the pixel being estimated, through a new uniformly jittered
+/// point of it: each call takes a new sample (the renderer makes it from Part 1's camera ray).
+using PixelSampleFn = std::function<glm::vec3()>;
 
 /// Whether a pixel has converged: the 95% confidence half-width of the estimate the pixel
 /// reports, I = 1.96·σ/√n_E, is at most tolerance·μ, where σ and μ come from the decision
@@ -59,20 +42,12 @@ Ray jittered_pixel_ray(const Camera& camera, const PixelRef& px, Rng& rng);
 /// whose decision samples are all equal (σ = 0) has converged, even a black one.
 bool pixel_converged(const IlluminanceStats& decision, long estimate_count, float tolerance);
 
-/// Samples pixel `px` in batches of settings.batch jittered samples, stopping after the first
-/// batch that leaves the pixel converged, or at settings.max_samples. Sample i goes into the
-/// decision statistics if is_decision_sample(i), else (its radiance) into *estimate, the pixel's
-/// value. Returns the number of samples taken, decision samples included.
-int sample_pixel_adaptive(const Camera& camera, const PixelRef& px,
-                          const AdaptiveSettings& settings, Rng& rng, const RadianceFn& radiance,
+/// Samples a pixel in batches of settings.batch samples (each the radiance next_sample()
+/// returns), stopping after the first batch that leaves the pixel converged, or at
+/// settings.max_samples. Sample i goes into the decision statistics if is_decision_sample(i),
+/// else (its radiance) into *estimate, the pixel's value. Returns the number of samples taken,
+/// decision samples included.
+int sample_pixel_adaptive(const AdaptiveSettings& settings, const PixelSampleFn& next_sample,
                           PixelStats* estimate);
-
-/// Estimates pixel `px` like estimate_pixel, but adaptively (sample_pixel_adaptive), and records
-/// on *stats the samples that went into the decision only, so the sample-rate image shows every
-/// sample taken while the estimate's count stays that of the samples it averages. Returns the
-/// samples taken.
-int estimate_pixel_adaptive(const Camera& camera, const PixelRef& px,
-                            const AdaptiveSettings& settings, Rng& rng,
-                            const RadianceFn& radiance, PixelStats* stats);
 
 }  // namespace pt

@@ -1,4 +1,4 @@
-#include "generator/collada_writer.h"
+#include "scenes/generator/collada_writer.h"
 
 #include <charconv>
 #include <cmath>

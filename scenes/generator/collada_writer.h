@@ -7,7 +7,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
-#include "generator/mesh.h"
+#include "scenes/generator/mesh.h"
 
 namespace scenegen {
 

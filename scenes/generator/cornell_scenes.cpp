@@ -1,4 +1,4 @@
-#include "generator/cornell_scenes.h"
+#include "scenes/generator/cornell_scenes.h"
 
 #include <stdexcept>
 

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "generator/collada_writer.h"
-#include "generator/mesh.h"
+#include "scenes/generator/collada_writer.h"
+#include "scenes/generator/mesh.h"
 
 namespace scenegen {
 

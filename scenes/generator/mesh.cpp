@@ -1,4 +1,4 @@
-#include "generator/mesh.h"
+#include "scenes/generator/mesh.h"
 
 #include <cmath>
 #include <stdexcept>

@@ -8,8 +8,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "generator/collada_writer.h"
-#include "generator/cornell_scenes.h"
+#include "scenes/generator/collada_writer.h"
+#include "scenes/generator/cornell_scenes.h"
 
 int main(int argc, char** argv) {
   std::vector<std::string> names;

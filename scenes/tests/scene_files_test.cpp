@@ -5,17 +5,11 @@
 
 #include <gtest/gtest.h>
 
-#include "generator/collada_writer.h"
-#include "generator/cornell_scenes.h"
+#include "framework/text/text_file.h"
+#include "scenes/generator/collada_writer.h"
+#include "scenes/generator/cornell_scenes.h"
 
 namespace {
-
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // The first line where two texts differ, for a message that says where to look.
 std::string first_difference(const std::string& a, const std::string& b) {
@@ -36,7 +30,7 @@ TEST(SceneFiles, CommittedScenesAreWhatTheGeneratorWrites) {
     if (!entry.committed) continue;
     ++committed;
     const std::string path = std::string(PT_SOURCE_DIR) + "/scenes/" + entry.name + ".dae";
-    const std::string on_disk = read_file(path);
+    const std::string on_disk = pt::read_text_file(path);
     ASSERT_FALSE(on_disk.empty()) << path << " is missing or empty";
     const std::string generated = scenegen::to_collada(scenegen::build_scene(entry.name));
     EXPECT_TRUE(on_disk == generated)

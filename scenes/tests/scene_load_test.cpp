@@ -7,8 +7,8 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "scene/collada_loader.h"
-#include "scene/scene.h"
+#include "framework/scene/collada_loader.h"
+#include "framework/scene/scene.h"
 
 namespace {
 

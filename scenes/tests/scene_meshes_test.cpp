@@ -9,8 +9,8 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "generator/cornell_scenes.h"
-#include "generator/mesh.h"
+#include "scenes/generator/cornell_scenes.h"
+#include "scenes/generator/mesh.h"
 
 namespace {
 

@@ -1,9 +1,8 @@
-#include "directive.h"
+#include "website/src/directive.h"
 
 #include <algorithm>
 #include <cctype>
 
-#include "plot/xml_text.h"
 
 namespace pt::web {
 namespace {
@@ -110,7 +109,5 @@ std::string merge_flags(const std::string& base, const std::string& extra) {
   }
   return out;
 }
-
-std::string html_escape(const std::string& text) { return xml_escape(text); }
 
 }  // namespace pt::web

@@ -35,7 +35,4 @@ std::vector<std::string> split_flags(const std::string& flags);
 /// ("-r 64 48" over "-r 160 120") replaces the base's, since a command line may not repeat it.
 std::string merge_flags(const std::string& base, const std::string& extra);
 
-/// Escapes text for HTML element content and attribute values.
-std::string html_escape(const std::string& text);
-
 }  // namespace pt::web

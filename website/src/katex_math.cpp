@@ -1,4 +1,4 @@
-#include "katex_math.h"
+#include "website/src/katex_math.h"
 
 #include <nlohmann/json.hpp>
 
@@ -8,7 +8,7 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "process.h"
+#include "framework/process/child_process.h"
 
 namespace fs = std::filesystem;
 
@@ -32,15 +32,18 @@ std::vector<TypesetMath> KatexMath::typeset(const std::vector<MathSpan>& spans) 
   close(fd);
   fs::path in_file = tmpl;
   std::ofstream(in_file) << input.dump();
-  ProcessResult r = run_process({"node", script.string(), in_file.string()});
+  // Typesetting a page's math takes a second or two; a node that hangs is stopped.
+  ChildResult r = run_child({"node", script.string(), in_file.string()}, 300.0, {}, 256 << 20,
+                            ChildStreams::separate);
   fs::remove(in_file);
-  if (r.exit_code != 0) {
-    throw std::runtime_error("typesetting the math with node failed: " + tail_lines(r.err, 5) +
-                             (r.exit_code < 0 ? " (is Node.js installed? run tools/setup.sh)" : ""));
+  if (!r.ok()) {
+    throw std::runtime_error("typesetting the math with node failed (it " + r.describe() + "): " +
+                             tail_lines(r.errors, 5) +
+                             (!r.started ? " (is Node.js installed? run tools/setup.sh)" : ""));
   }
-  nlohmann::json output = nlohmann::json::parse(r.out, nullptr, false);
+  nlohmann::json output = nlohmann::json::parse(r.output, nullptr, false);
   if (!output.is_array() || output.size() != spans.size()) {
-    throw std::runtime_error("KaTeX returned an unexpected answer: " + tail_lines(r.out, 3));
+    throw std::runtime_error("KaTeX returned an unexpected answer: " + tail_lines(r.output, 3));
   }
   std::vector<TypesetMath> result;
   for (const auto& item : output) {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "math_spans.h"
+#include "website/src/math_spans.h"
 
 namespace pt::web {
 

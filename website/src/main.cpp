@@ -7,9 +7,9 @@
 #include <filesystem>
 #include <iostream>
 
-#include "site_builder.h"
-#include "site_checks.h"
-#include "starter.h"
+#include "website/src/site_builder.h"
+#include "website/src/site_checks.h"
+#include "website/src/starter.h"
 
 namespace fs = std::filesystem;
 

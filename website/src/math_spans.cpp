@@ -1,4 +1,4 @@
-#include "math_spans.h"
+#include "website/src/math_spans.h"
 
 #include <cctype>
 #include <cstdio>

@@ -1,4 +1,4 @@
-#include "render_cache.h"
+#include "website/src/render_cache.h"
 
 #include <nlohmann/json.hpp>
 
@@ -8,8 +8,9 @@
 #include <fstream>
 #include <sstream>
 
-#include "directive.h"
-#include "process.h"
+#include "framework/process/child_process.h"
+#include "framework/text/text_file.h"
+#include "website/src/directive.h"
 
 namespace fs = std::filesystem;
 
@@ -30,10 +31,11 @@ ContentHash& ContentHash::add(const std::string& bytes) {
 }
 
 ContentHash& ContentHash::add_file(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return add(s.str());
+  try {
+    return add(read_text_file(file));
+  } catch (const std::runtime_error& e) {
+    throw RenderError(e.what());
+  }
 }
 
 std::string ContentHash::hex() const {
@@ -93,14 +95,16 @@ CachedRender RenderCache::render(const fs::path& scene, const std::string& flags
   argv.insert(argv.end(), args.begin(), args.end());
   argv.insert(argv.end(), {"-f", (scratch / "render.png").string(), scene.string()});
   auto start = std::chrono::steady_clock::now();
-  ProcessResult run = run_process(argv);
+  const ChildResult run =
+      run_child(argv, kRenderTimeLimitSeconds, {}, 1 << 20, ChildStreams::separate);
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (run.exit_code != 0 || !fs::exists(scratch / "render.png")) {
-    std::string why = tail_lines(run.err + "\n" + run.out, 6);
+  if (!run.ok() || !fs::exists(scratch / "render.png")) {
+    std::string why = tail_lines(run.errors + "\n" + run.output, 6);
     fs::remove_all(scratch);
     throw RenderError("`" + result.command + "` failed" +
                       (run.exit_code > 0 ? " with exit code " + std::to_string(run.exit_code)
-                                         : std::string()) +
+                       : run.ok()        ? std::string()
+                                         : " (it " + run.describe() + ")") +
                       (why.empty() ? ", and wrote no image" : ":\n" + why));
   }
   std::ofstream(scratch / "meta.json")

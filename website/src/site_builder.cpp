@@ -1,4 +1,4 @@
-#include "site_builder.h"
+#include "website/src/site_builder.h"
 
 #include <cmark.h>
 #include <sys/stat.h>
@@ -11,23 +11,18 @@
 #include <set>
 #include <sstream>
 
-#include "plot/convergence_plot.h"
-#include "directive.h"
-#include "katex_math.h"
-#include "math_spans.h"
-#include "render_cache.h"
+#include "framework/plot/convergence_plot.h"
+#include "framework/text/text_file.h"
+#include "framework/text/xml_text.h"
+#include "website/src/directive.h"
+#include "website/src/katex_math.h"
+#include "website/src/math_spans.h"
+#include "website/src/render_cache.h"
 
 namespace fs = std::filesystem;
 
 namespace pt::web {
 namespace {
-
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 void replace_all(std::string& s, const std::string& from, const std::string& to) {
   for (size_t pos = s.find(from); pos != std::string::npos; pos = s.find(from, pos + to.size())) {
@@ -49,11 +44,11 @@ class SiteBuilder {
   }
 
   BuildReport run() {
-    std::string markdown = read_text(opt_.source);
     if (!fs::is_regular_file(opt_.source)) {
       report_.problems.push_back({opt_.source, 0, "no such write-up source"});
       return report_;
     }
+    std::string markdown = read_text_file(opt_.source);
     prepare_output();
     protected_ = protect_math(markdown, math_);
     std::unique_ptr<cmark_node, void (*)(cmark_node*)> doc(
@@ -213,7 +208,7 @@ class SiteBuilder {
   }
 
   std::string caption_html(const std::string& caption, int line) {
-    return html_escape(protect_inline_math(caption, line, math_));
+    return xml_escape(protect_inline_math(caption, line, math_));
   }
 
   fs::path find_scene(const std::string& name, int line) {
@@ -254,8 +249,8 @@ class SiteBuilder {
       size_t before = report_.problems.size();
       use_source_file(ref);
       if (report_.problems.size() != before) return "";
-      return "<figure class=\"" + css_class + "\"><img src=\"" + html_escape(ref.target) +
-             "\" alt=\"" + html_escape(d.get("caption")) + "\"><figcaption>" + caption +
+      return "<figure class=\"" + css_class + "\"><img src=\"" + xml_escape(ref.target) +
+             "\" alt=\"" + xml_escape(d.get("caption")) + "\"><figcaption>" + caption +
              "</figcaption></figure>";
     }
     fs::path scene = find_scene(d.get("scene"), line);
@@ -284,7 +279,7 @@ class SiteBuilder {
     char seconds[32];
     std::snprintf(seconds, sizeof seconds, "%.2f s", r.seconds);
     html += "<figcaption>" + caption + (caption.empty() ? "" : "<br>") + "<code>" +
-            html_escape(r.command) + "</code> <span class=\"time\">" + seconds +
+            xml_escape(r.command) + "</code> <span class=\"time\">" + seconds +
             "</span></figcaption></figure>";
     return html;
   }
@@ -293,7 +288,7 @@ class SiteBuilder {
     fs::path dir = make_dir(opt_.out_dir / "renders");
     fs::copy_file(from, dir / name, fs::copy_options::overwrite_existing);
     publish(dir / name);
-    return "<img src=\"renders/" + html_escape(name) + "\" alt=\"" + html_escape(alt) + "\">";
+    return "<img src=\"renders/" + xml_escape(name) + "\" alt=\"" + xml_escape(alt) + "\">";
   }
 
   /// Renders side by side: the header's scene and flags are shared, each line adds its own.
@@ -362,8 +357,8 @@ class SiteBuilder {
     std::ofstream(dir / name) << svg;
     publish(dir / name);
     std::string caption = caption_html(d.get("caption"), line);
-    return "<figure class=\"plot\"><img src=\"plots/" + html_escape(name) + "\" alt=\"" +
-           html_escape(d.get("title", "convergence plot")) + "\">" +
+    return "<figure class=\"plot\"><img src=\"plots/" + xml_escape(name) + "\" alt=\"" +
+           xml_escape(d.get("title", "convergence plot")) + "\">" +
            (caption.empty() ? "" : "<figcaption>" + caption + "</figcaption>") + "</figure>";
   }
 
@@ -397,7 +392,7 @@ class SiteBuilder {
   }
 
   void write_page(const std::string& body) {
-    std::string page = read_text(opt_.web_dir / "assets" / "template.html");
+    std::string page = read_text_file(opt_.web_dir / "assets" / "template.html");
     if (page.empty()) {
       throw std::runtime_error("the page template " +
                                (opt_.web_dir / "assets" / "template.html").string() +
@@ -406,7 +401,7 @@ class SiteBuilder {
     std::string css_links;
     if (!katex_css_.empty()) css_links += "<link rel=\"stylesheet\" href=\"" + katex_css_ + "\">\n";
     css_links += "<link rel=\"stylesheet\" href=\"style.css\">";
-    replace_all(page, "{{title}}", html_escape(title_));
+    replace_all(page, "{{title}}", xml_escape(title_));
     replace_all(page, "{{stylesheets}}", css_links);
     replace_all(page, "{{body}}", body);
     fs::copy_file(opt_.web_dir / "assets" / "style.css", opt_.out_dir / "style.css",

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "site_checks.h"
+#include "website/src/site_checks.h"
 
 namespace pt::web {
 

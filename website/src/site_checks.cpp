@@ -1,4 +1,4 @@
-#include "site_checks.h"
+#include "website/src/site_checks.h"
 
 #include <sys/stat.h>
 
@@ -10,6 +10,9 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <stdexcept>
+
+#include "framework/text/text_file.h"
 
 namespace fs = std::filesystem;
 
@@ -21,11 +24,13 @@ std::string lower(std::string s) {
   return s;
 }
 
+/// The file's text, or empty when it cannot be read (a permission problem is reported on its own).
 std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
+  try {
+    return read_text_file(p);
+  } catch (const std::runtime_error&) {
+    return {};
+  }
 }
 
 /// Line numbers of offsets into one text, computed once.

@@ -1,4 +1,4 @@
-#include "starter.h"
+#include "website/src/starter.h"
 
 #include <fstream>
 #include <sstream>

@@ -1,5 +1,5 @@
 // Directive attributes and pathtracer flags are read the way they are written.
-#include "directive.h"
+#include "website/src/directive.h"
 
 #include <gtest/gtest.h>
 

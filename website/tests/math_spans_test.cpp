@@ -1,5 +1,5 @@
 // Math spans are found where a reader means math and nowhere else, and lines map back.
-#include "math_spans.h"
+#include "website/src/math_spans.h"
 
 #include <gtest/gtest.h>
 

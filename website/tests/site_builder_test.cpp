@@ -1,13 +1,14 @@
 // `website build` on small write-ups: images and renders land in the folder, renders come from
 // the cache when nothing changed, and every mistake is reported at its line of the Markdown.
-#include "site_builder.h"
+#include "website/src/site_builder.h"
 
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <sstream>
 
-#include "test_folder.h"
+#include "framework/text/text_file.h"
+#include "website/tests/test_folder.h"
 
 namespace fs = std::filesystem;
 using pt::web::BuildOptions;
@@ -23,12 +24,7 @@ std::string all(const std::vector<Problem>& problems) {
   return s;
 }
 
-std::string read(const fs::path& p) {
-  std::ifstream in(p);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+std::string read(const fs::path& p) { return pt::read_text_file(p); }
 
 /// A write-up folder with a scene, the fake pathtracer, and a log of its runs.
 class WebsiteBuild : public ::testing::Test {

@@ -1,10 +1,10 @@
 // `website check` on small hand-made folders: each mistake students make is reported with the
 // file and the line of index.html that holds it, and a correct folder passes.
-#include "site_checks.h"
+#include "website/src/site_checks.h"
 
 #include <gtest/gtest.h>
 
-#include "test_folder.h"
+#include "website/tests/test_folder.h"
 
 namespace fs = std::filesystem;
 using pt::web::Problem;

@@ -1,6 +1,6 @@
 // `website init`: the starting write-up has the five parts' sections with the renders each asks
 // for, every scene it names is found, and it builds as it is.
-#include "starter.h"
+#include "website/src/starter.h"
 
 #include <gtest/gtest.h>
 
@@ -8,8 +8,9 @@
 #include <regex>
 #include <sstream>
 
-#include "site_builder.h"
-#include "test_folder.h"
+#include "framework/text/text_file.h"
+#include "website/src/site_builder.h"
+#include "website/tests/test_folder.h"
 
 namespace fs = std::filesystem;
 using pt::web::testing::TestFolder;
@@ -72,9 +73,7 @@ TEST(WebsiteInit, BuildsAsItIsWithAConvergencePlot) {
   std::string all;
   for (const auto& p : report.problems) all += p.to_string() + "\n";
   ASSERT_TRUE(report.problems.empty()) << all;
-  std::ifstream in(b.out_dir / "index.html");
-  std::stringstream html;
-  html << in.rdbuf();
-  EXPECT_GE(count(html.str(), "<img src=\"renders/"), 3 + 4 + 2 + 4 + 2 + 6 + 6 + 1);
-  EXPECT_EQ(count(html.str(), "<img src=\"plots/"), 1);
+  const std::string html = pt::read_text_file(b.out_dir / "index.html");
+  EXPECT_GE(count(html, "<img src=\"renders/"), 3 + 4 + 2 + 4 + 2 + 6 + 6 + 1);
+  EXPECT_EQ(count(html, "<img src=\"plots/"), 1);
 }

@@ -10,8 +10,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "child_process.h"
-#include "report.h"
+#include "framework/process/child_process.h"
+#include "grader/report.h"
 
 namespace fs = std::filesystem;
 
@@ -28,10 +28,12 @@ TEST(GraderHandoutRoundTrip, HandoutBuildsAndGradesPart1AsZero) {
   // No solution left anywhere in the handout.
   ChildResult grep = run_child({"grep", "-rl", "BEGIN SOLUTION", (handout / "parts").string()}, 60);
   EXPECT_EQ(grep.exit_code, 1) << "solution markers left in: " << grep.output;
-  // Nor the framework's wide BVH, whose files are marked solution-only (they hold a complete
-  // triangle test and traversal): the handout's renders trace the student's own tree.
-  EXPECT_FALSE(fs::exists(handout / "framework" / "accel" / "wide_bvh.cpp"));
-  EXPECT_FALSE(fs::exists(handout / "framework" / "accel" / "sheared_triangle.h"));
+  // Nor the app's wide BVH, whose files are marked solution-only (they hold a complete triangle
+  // test and traversal): the handout's renders trace the student's own tree.
+  EXPECT_FALSE(fs::exists(handout / "app" / "accel" / "wide_bvh.cpp"));
+  EXPECT_FALSE(fs::exists(handout / "app" / "accel" / "sheared_triangle.h"));
+  // The given code the parts sit on is handed out whole.
+  EXPECT_TRUE(fs::exists(handout / "pipeline" / "2-bvh" / "bvh_build.cpp"));
 
   ChildResult configure = run_child({"cmake", "-S", handout.string(), "-B", build.string(),
                                      "-DCMAKE_BUILD_TYPE=Debug"}, 300);

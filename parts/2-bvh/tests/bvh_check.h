@@ -20,12 +20,12 @@
 #include <gtest/gtest.h>
 #include <tbb/parallel_for.h>
 
-#include "1-raygen/scene_intersect.h"
-#include "2-bvh/bvh.h"
-#include "math/float_error.h"
-#include "sampling/rng.h"
-#include "sampling/warp.h"
-#include "scene/collada_loader.h"
+#include "framework/math/float_error.h"
+#include "framework/sampling/rng.h"
+#include "framework/sampling/warp.h"
+#include "framework/scene/collada_loader.h"
+#include "parts/2-bvh/bvh.h"
+#include "pipeline/1-raygen/scene_intersect.h"
 
 namespace pt {
 namespace test {

@@ -1,4 +1,4 @@
-// Inputs the BVH tests share (Part 2's and the framework's wide tree's): the degenerate scenes
+// Inputs the BVH tests share (Part 2's and the wide tree's): the degenerate scenes
 // that break naive builds and traversals, and the normals view rendered through any ray query.
 #pragma once
 
@@ -9,11 +9,11 @@
 #include <glm/gtc/constants.hpp>
 #include <glm/vec3.hpp>
 
-#include "1-raygen/pixel_loop.h"
-#include "geometry/ray_query.h"
-#include "render/pixel_stats.h"
-#include "sampling/rng.h"
-#include "scene/scene.h"
+#include "framework/geometry/ray_query.h"
+#include "framework/render/pixel_stats.h"
+#include "framework/sampling/rng.h"
+#include "framework/scene/scene.h"
+#include "parts/1-raygen/pixel_loop.h"
 
 namespace pt::test {
 

@@ -1,0 +1,103 @@
+// Four boxes against one ray at once (SSE where the target has it): the wide BVH's slab test,
+// conservative in the same way as Part 2's intersect_box.
+// SOLUTION-ONLY FILE: not in the student handout, since it holds complete Part 1 and Part 2 answers.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+
+#include "framework/math/float_error.h"
+#include "framework/math/ray.h"
+
+#if defined(__SSE2__) || defined(_M_X64) || (defined(_M_IX86_FP) && _M_IX86_FP >= 2)
+#define PT_ACCEL_SSE 1
+#include <emmintrin.h>
+#include <xmmintrin.h>
+#else
+#define PT_ACCEL_SSE 0
+#endif
+
+namespace pt {
+
+/// Four axis-aligned boxes, structure of arrays: bounds[0..2] are the lower x, y, z of the four
+/// boxes, bounds[3..5] the upper ones, so one load brings the same plane of all four.
+struct alignas(16) Box4 {
+  float bounds[6][4];
+};
+
+/// A ray prepared for Box4 tests: its origin and reciprocal direction in every lane, and per axis
+/// which of a box's planes it meets first (chosen by the direction's sign, so no swap is needed
+/// and a ray with a -0 component still treats the slab it runs along as unbounded).
+struct Box4Ray {
+#if PT_ACCEL_SSE
+  __m128 o[3], inv_d[3];
+#else
+  float o[3][4], inv_d[3][4];
+#endif
+  int near_plane[3], far_plane[3];
+  float tmin = 0.0f;
+
+  explicit Box4Ray(const Ray& ray) : tmin(ray.tmin) {
+    for (int a = 0; a < 3; ++a) {
+      const float inv = 1.0f / ray.d[a];
+#if PT_ACCEL_SSE
+      o[a] = _mm_set1_ps(ray.o[a]);
+      inv_d[a] = _mm_set1_ps(inv);
+#else
+      for (int k = 0; k < 4; ++k) o[a][k] = ray.o[a], inv_d[a][k] = inv;
+#endif
+      near_plane[a] = std::signbit(inv) ? 3 + a : a;
+      far_plane[a] = std::signbit(inv) ? a : 3 + a;
+    }
+  }
+};
+
+/// Which of the four boxes the ray meets at some distance in [ray.tmin, tmax]: bit k of the result
+/// for box k, and t_entry[k] where it enters (clamped to tmin). The same test as Part 2's
+/// intersect_box, lane by lane: each plane distance within γ(3) of exact, the near distance
+/// moved down and the far one up by 2·γ(3) (scaling the largest near distance is scaling each,
+/// since the scaling is monotone), a NaN distance (0 · inf) narrowing nothing. An empty box
+/// (lo = +inf, hi = -inf) is never met.
+inline unsigned intersect_box4(const Box4& box, const Box4Ray& ray, float tmax, float t_entry[4]) {
+  constexpr float kFarScale = 1.0f + 2.0f * gamma(3);
+  constexpr float kNearScale = 1.0f - 2.0f * gamma(3);
+#if PT_ACCEL_SSE
+  // _mm_max_ps(x, acc) returns acc when x is NaN: a slab the ray runs inside of narrows nothing.
+  __m128 tn = _mm_set1_ps(-INFINITY), tf = _mm_set1_ps(INFINITY);
+  for (int a = 0; a < 3; ++a) {
+    const __m128 n = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(box.bounds[ray.near_plane[a]]), ray.o[a]),
+                                ray.inv_d[a]);
+    const __m128 f = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(box.bounds[ray.far_plane[a]]), ray.o[a]),
+                                ray.inv_d[a]);
+    tn = _mm_max_ps(n, tn);
+    tf = _mm_min_ps(f, tf);
+  }
+  // Down for the near distance and up for the far one, whatever their sign.
+  tn = _mm_min_ps(_mm_mul_ps(tn, _mm_set1_ps(kNearScale)), _mm_mul_ps(tn, _mm_set1_ps(kFarScale)));
+  tf = _mm_max_ps(_mm_mul_ps(tf, _mm_set1_ps(kFarScale)), _mm_mul_ps(tf, _mm_set1_ps(kNearScale)));
+  const __m128 t0 = _mm_max_ps(tn, _mm_set1_ps(ray.tmin));
+  const __m128 t1 = _mm_min_ps(tf, _mm_set1_ps(tmax));
+  _mm_storeu_ps(t_entry, t0);
+  return unsigned(_mm_movemask_ps(_mm_cmple_ps(t0, t1)));
+#else
+  unsigned mask = 0;
+  for (int k = 0; k < 4; ++k) {
+    float tn = -INFINITY, tf = INFINITY;
+    for (int a = 0; a < 3; ++a) {
+      const float n = (box.bounds[ray.near_plane[a]][k] - ray.o[a][k]) * ray.inv_d[a][k];
+      const float f = (box.bounds[ray.far_plane[a]][k] - ray.o[a][k]) * ray.inv_d[a][k];
+      tn = n > tn ? n : tn;
+      tf = f < tf ? f : tf;
+    }
+    tn = std::fmin(tn * kNearScale, tn * kFarScale);
+    tf = std::fmax(tf * kFarScale, tf * kNearScale);
+    const float t0 = tn > ray.tmin ? tn : ray.tmin;
+    const float t1 = tf < tmax ? tf : tmax;
+    t_entry[k] = t0;
+    mask |= unsigned(t0 <= t1) << k;
+  }
+  return mask;
+#endif
+}
+
+}  // namespace pt

@@ -1,0 +1,532 @@
+// SOLUTION-ONLY FILE: not in the student handout, since it holds complete Part 1 and Part 2 answers.
+#include "app/accel/wide_bvh.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
+#include <glm/geometric.hpp>
+
+#include "app/accel/sheared_triangle.h"
+#include "pipeline/1-raygen/scene_intersect.h"
+
+namespace pt {
+
+namespace {
+
+/// Asks the kernel to back a reserved but untouched array with huge pages where it can: the
+/// arrays of a million-triangle tree span tens of megabytes, and faulting them in 4 KiB at a time
+/// costs more than the collapse itself on a virtual machine. Only a hint: nothing changes if the
+/// kernel says no.
+template <class T>
+void prefer_huge_pages(const std::vector<T>& v) {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  constexpr uintptr_t kHuge = uintptr_t(2) << 20;
+  const uintptr_t begin = (reinterpret_cast<uintptr_t>(v.data()) + kHuge - 1) & ~(kHuge - 1);
+  const uintptr_t end = reinterpret_cast<uintptr_t>(v.data() + v.capacity()) & ~(kHuge - 1);
+  if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+#else
+  (void)v;
+#endif
+}
+
+}  // namespace
+
+WideBvh::WideBvh(const Scene& scene, const Bvh& binary) : scene_(scene) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<BvhNode>& bin = binary.nodes();
+  order_ = binary.order();
+  if (order_.size() != scene.primitive_count())
+    throw std::invalid_argument("WideBvh: the binary tree holds " + std::to_string(order_.size()) +
+                                " primitives but the scene has " +
+                                std::to_string(scene.primitive_count()) +
+                                " (was it built over another scene?)");
+  if (!bin.empty()) {
+    // Upper bounds, so nothing is moved while the tree grows: every wide node but a lone root
+    // leaf's consumes a binary interior node, and every packet holds at least one entry. The
+    // capacity never touched costs address space, not memory.
+    size_t interior = 0;
+    for (const BvhNode& n : bin) interior += !n.is_leaf();
+    nodes_.reserve(interior + 1);
+    children_.reserve(interior + 1);
+    packets_.reserve(order_.size());
+    prefer_huge_pages(nodes_);
+    prefer_huge_pages(packets_);
+    collapse(bin, 0, 0);
+  }
+  stats_.nodes = uint32_t(nodes_.size());
+  size_t slots = 0;
+  for (size_t i = 0; i < nodes_.size(); ++i) {
+    slots += children_[i];
+    for (int k = 0; k < children_[i]; ++k) stats_.leaves += nodes_[i].count[k] > 0;
+  }
+  stats_.mean_children = nodes_.empty() ? 0.0 : double(slots) / double(nodes_.size());
+  stats_.build_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+namespace {
+
+/// Part 1's rule (intersect_primitive in scene_intersect.cpp), with its very operations: a
+/// triangle whose corners are collinear in float (a normal of length 0, or one that overflows)
+/// has no normal to shade or offset along, so a nearest-hit query never reports it.
+bool part1_shades(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2) {
+  const float len = glm::length(glm::cross(p1 - p0, p2 - p0));
+  return len > 0.0f && std::isfinite(len);
+}
+
+}  // namespace
+
+void WideBvh::add_packets(uint32_t first, uint32_t count) {
+  constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+  // Lanes past the leaf's end and spheres' lanes hold NaN corners: never rejected by the
+  // filter, they are left out by the packet's lane masks.
+  for (uint32_t base = first; base < first + count; base += Triangle4::kLanes) {
+    LeafPacket& lanes = packets_.emplace_back();
+    Triangle4& packet = lanes.tri;
+    lanes.first = base;
+    for (uint32_t lane = 0; lane < Triangle4::kLanes; ++lane) {
+      const uint32_t i = base + lane;
+      const bool entry = i < first + count;
+      const bool triangle = entry && scene_.is_triangle(order_[i]);
+      lanes.entries |= uint8_t(entry) << lane;
+      lanes.prim[lane] = entry ? order_[i] : 0;
+      glm::vec3 p[3] = {glm::vec3(kNaN), glm::vec3(kNaN), glm::vec3(kNaN)};
+      if (triangle) {
+        const Triangle& t = scene_.triangles[order_[i]];
+        for (int v = 0; v < 3; ++v) p[v] = scene_.positions[t.v[v]], lanes.vertex[v][lane] = t.v[v];
+        lanes.triangles |= uint8_t(1u << lane);
+        lanes.nearest |= uint8_t(part1_shades(p[0], p[1], p[2])) << lane;
+      } else if (entry) {
+        lanes.nearest |= uint8_t(1u << lane);  // a sphere: Part 1 is asked for each candidate
+      }
+      for (int v = 0; v < 3; ++v)
+        for (int a = 0; a < 3; ++a) packet.corner[v][a][lane] = p[v][a];
+    }
+  }
+}
+
+namespace {
+
+/// One child slot of a wide node while it is being made: a binary subtree still to collapse, or
+/// a run of leaf-order entries that becomes one wide leaf.
+struct Slot {
+  uint32_t node;   ///< the binary node (for a run merged from several subtrees: the first one's)
+  uint32_t first;  ///< leaf: first leaf-order entry
+  uint32_t count;  ///< leaf: entries; 0 for a subtree still to collapse
+  Bounds3 box;
+  float area;
+  /// The way down from the wide node's own binary node: at step d the split axis[d], and bit d of
+  /// `right` set where it went into the second child. A merged run keeps the common part.
+  static constexpr int kMaxPath = 16;
+  uint8_t depth = 0;
+  uint8_t axis[kMaxPath] = {};
+  uint32_t right = 0;
+
+  /// This slot's child `side` (0 first, 1 second) of binary node `parent`, one step further down.
+  void descend(const Slot& from, const BvhNode& parent, int side) {
+    depth = from.depth, right = from.right;
+    std::copy(from.axis, from.axis + kMaxPath, axis);
+    if (depth < kMaxPath) {  // deeper than that only the order is approximate
+      axis[depth] = parent.axis;
+      right |= uint32_t(side) << depth;
+      ++depth;
+    }
+  }
+  /// Keeps only the way down that this slot and `next`, its neighbour, share.
+  void share_path(const Slot& next) {
+    int d = 0;
+    while (d < depth && d < next.depth && (right >> d & 1u) == (next.right >> d & 1u)) ++d;
+    depth = uint8_t(d);
+    right &= (1u << d) - 1u;
+  }
+};
+
+/// Whether, for rays whose direction has the signs of `octant` (bit a: negative along axis a),
+/// slot b (after slot a in slot order) should be visited before slot a: where their ways down
+/// part, the binary tree split along some axis with a's side below b's, so a ray going down that
+/// axis meets b's side first. Where one way is part of the other, slot order stays.
+bool visit_before(const Slot& b, const Slot& a, unsigned octant) {
+  const int shared = std::min(a.depth, b.depth);
+  const uint32_t differ = (a.right ^ b.right) & ((uint64_t(1) << shared) - 1u);
+  return differ != 0 && (octant >> a.axis[__builtin_ctz(differ)] & 1u) != 0;
+}
+
+/// Per octant of ray directions, the order to visit the n slots in (see WideNode::order): the n
+/// slots in use first, then the unused ones.
+void octant_orders(const Slot* slots, int n, uint8_t orders[8][3]) {
+  for (unsigned octant = 0; octant < 8; ++octant) {
+    int order[WideNode::kWidth];
+    for (int j = 0; j < WideNode::kWidth; ++j) order[j] = j;
+    for (int i = 1; i < n; ++i)  // stable insertion sort: ties keep slot order
+      for (int j = i; j > 0 && visit_before(slots[order[j]], slots[order[j - 1]], octant); --j)
+        std::swap(order[j], order[j - 1]);
+    uint32_t bits = 0;
+    for (int j = 0; j < WideNode::kWidth; ++j) bits |= uint32_t(order[j]) << (3 * j);
+    for (int b = 0; b < 3; ++b) orders[octant][b] = uint8_t(bits >> (8 * b));
+  }
+}
+
+/// How many entries the binary subtree at `index` holds, if at most `limit`; else limit + 1.
+/// Stops as soon as it knows, so asking costs at most a few nodes however large the subtree.
+uint32_t entries_up_to(const std::vector<BvhNode>& bin, uint32_t index, uint32_t limit,
+                       uint32_t* first) {
+  const BvhNode& n = bin[index];
+  if (n.is_leaf()) {
+    *first = n.offset;
+    return n.count;
+  }
+  const uint32_t left = entries_up_to(bin, index + 1, limit, first);
+  if (left > limit) return limit + 1;
+  uint32_t unused;
+  return std::min(left + entries_up_to(bin, n.offset, limit - left, &unused), limit + 1);
+}
+
+/// The slot for binary node `index`: a leaf when it is a binary leaf or its whole subtree fits
+/// WideBvh::kPackedLeafEntries (the binary tree's small leaves are packed four triangles to a
+/// packet, so the SIMD test's lanes are full), else a subtree to open or collapse.
+Slot make_slot(const std::vector<BvhNode>& bin, uint32_t index) {
+  Slot s{index, 0, 0, bin[index].bounds, bin[index].bounds.surface_area()};
+  const uint32_t n = entries_up_to(bin, index, WideBvh::kPackedLeafEntries, &s.first);
+  if (bin[index].is_leaf() || n <= WideBvh::kPackedLeafEntries) s.count = n;
+  return s;
+}
+
+}  // namespace
+
+uint32_t WideBvh::collapse(const std::vector<BvhNode>& bin, uint32_t index, uint32_t depth) {
+  if (depth > uint32_t(Bvh::kMaxDepth))
+    throw std::invalid_argument("WideBvh: the binary tree is deeper than Bvh::kMaxDepth (" +
+                                std::to_string(Bvh::kMaxDepth) + ")");
+  stats_.depth = std::max(stats_.depth, depth + 1);
+  // A leaf at the root still gets a node above it, so every traversal starts the same way.
+  constexpr int kWidth = WideNode::kWidth;
+  Slot slots[kWidth];
+  int n = 0;
+  slots[n++] = make_slot(bin, index);
+  // Slots stay in the binary tree's order throughout, so neighbouring leaves hold neighbouring
+  // entries, and each slot remembers its way down, from which the visiting orders are made.
+  for (;;) {
+    // Open the largest subtree until every slot is used: a big box is the one most rays enter.
+    while (n < kWidth) {
+      int open = -1;
+      for (int k = 0; k < n; ++k)
+        if (slots[k].count == 0 && (open < 0 || slots[k].area > slots[open].area)) open = k;
+      if (open < 0) break;
+      const BvhNode& parent = bin[slots[open].node];
+      const Slot from = slots[open];
+      for (int k = n; k > open + 1; --k) slots[k] = slots[k - 1];
+      slots[open + 1] = make_slot(bin, parent.offset);
+      slots[open + 1].descend(from, parent, 1);
+      slots[open] = make_slot(bin, from.node + 1);
+      slots[open].descend(from, parent, 0);
+      ++n;
+    }
+    // Neighbouring leaves that fit one packed leaf together become one: a half-empty packet
+    // costs a whole SIMD test, and the slot freed may open a subtree instead.
+    bool merged = false;
+    for (int k = 0; k + 1 < n; ++k) {
+      Slot& a = slots[k];
+      const Slot& b = slots[k + 1];
+      if (a.count == 0 || b.count == 0 || a.count + b.count > WideBvh::kPackedLeafEntries) continue;
+      a.count += b.count;
+      a.box.grow(b.box);
+      a.area = a.box.surface_area();
+      a.share_path(b);
+      for (int j = k + 1; j + 1 < n; ++j) slots[j] = slots[j + 1];
+      --n;
+      --k;  // the grown leaf may take its next neighbour too
+      merged = true;
+    }
+    if (!merged || n == kWidth) break;
+    bool can_open = false;
+    for (int k = 0; k < n; ++k) can_open |= slots[k].count == 0;
+    if (!can_open) break;
+  }
+  const uint32_t self = uint32_t(nodes_.size());
+  {
+    WideNode& node = nodes_.emplace_back();
+    children_.push_back(uint8_t(n));
+    octant_orders(slots, n, node.order);
+    for (int k = 0; k < kWidth; ++k) {
+      const Bounds3 b = k < n ? slots[k].box : Bounds3{};
+      for (int a = 0; a < 3; ++a) {
+        node.boxes[k / 4].bounds[a][k % 4] = b.lo[a];
+        node.boxes[k / 4].bounds[3 + a][k % 4] = b.hi[a];
+      }
+      node.child[k] = 0;
+      node.count[k] = 0;
+    }
+  }
+  // Written through the index: collapsing a child appends to nodes_.
+  for (int k = 0; k < n; ++k) {
+    const Slot& c = slots[k];
+    if (c.count > 0) {
+      if (c.count > 255)
+        throw std::invalid_argument("WideBvh: a leaf of " + std::to_string(c.count) +
+                                    " primitives (at most 255)");
+      nodes_[self].child[k] = uint32_t(packets_.size());
+      nodes_[self].count[k] = uint8_t(c.count);
+      add_packets(c.first, c.count);
+    } else {
+      const uint32_t child = collapse(bin, c.node, depth + 1);
+      nodes_[self].child[k] = child;
+    }
+  }
+  return self;
+}
+
+/// The best hit of a nearest-hit query so far, judged as brute force judges: the smallest
+/// reported t, the lower primitive index on a tie.
+struct WideBvh::Nearest {
+  uint32_t prim = UINT32_MAX;
+  float t = 0.0f;
+  float b0 = 0.0f, b1 = 0.0f, b2 = 0.0f;
+  bool found() const { return prim != UINT32_MAX; }
+  bool beaten_by(float t_new, uint32_t prim_new) const {
+    return !found() || t_new < t || (t_new == t && prim_new < prim);
+  }
+};
+
+namespace {
+
+/// Which octant a direction points into: bit a set when it is negative along axis a.
+int octant_of(const glm::vec3& d) {
+  return int(std::signbit(d.x)) | int(std::signbit(d.y)) << 1 | int(std::signbit(d.z)) << 2;
+}
+
+/// Asks for the cache lines of a child the ray enters as soon as its box test says so, so that
+/// the misses of all the children entered overlap (and a pushed child's lines arrive while its
+/// siblings are visited) instead of each stalling the traversal in turn when it is reached.
+inline void prefetch_lines(const void* p, int lines) {
+  const char* c = static_cast<const char*>(p);
+  for (int i = 0; i < lines; ++i) __builtin_prefetch(c + 64 * i);
+}
+
+/// Which of a node's children the ray enters (bit k for slot k), and where (t_entry[k]).
+inline unsigned intersect_node(const WideNode& node, const Box4Ray& ray, float tmax,
+                               float t_entry[WideNode::kWidth]) {
+  unsigned mask = 0;
+  for (int b = 0; b < WideNode::kWidth / 4; ++b)
+    mask |= intersect_box4(node.boxes[b], ray, tmax, t_entry + 4 * b) << (4 * b);
+  return mask;
+}
+
+/// The cache lines of a leaf of `count` entries; a large binary leaf's first two packets only.
+inline int leaf_lines(uint32_t count) {
+  return count > Triangle4::kLanes ? int(2 * sizeof(LeafPacket) / 64) : int(sizeof(LeafPacket) / 64);
+}
+
+/// A traversal that would push past WideBvh::kStackSize entries. For a traceable ray the bound
+/// holds by construction (each level down pushes at most all but one of a node's children, and
+/// the tree is no deeper than Bvh::kMaxDepth); a push is still checked, so a broken invariant is
+/// an exception, never a write past the stack.
+[[noreturn]] void stack_overflow() {
+  throw std::logic_error("WideBvh: the traversal stack would overflow (a tree deeper than "
+                         "Bvh::kMaxDepth, or a box test that lets a ray into every child)");
+}
+
+/// A node or leaf still to visit, with the distance at which the ray enters its box.
+struct StackEntry {
+  uint32_t child;
+  uint32_t count;  ///< 0: `child` is a node; else a leaf of `count` entries from `child`
+  float t;
+};
+
+}  // namespace
+
+// kCheckEachCandidate: every triangle that would become the best is first made into a SurfaceHit
+// (Part 2's way), for the rare ray whose winner Part 1 then refuses to shade (a triangle whose
+// corners are collinear in float); otherwise only the winner is. kPrefetchShading: the caller will
+// make the winner's SurfaceHit, so each new best triangle's record, corners and normals are asked
+// for at once, from the vertex indices its packet holds (waiting on the record first was most of
+// the cost of a full intersect over a nearest query).
+template <bool kCheckEachCandidate, bool kPrefetchShading>
+void WideBvh::find_nearest(const Ray& ray, Nearest* best) const {
+  const ShearedRay4 sheared4(ray);
+  const ShearedRay& sheared = sheared4.r;
+  const Box4Ray box_ray(ray);
+  // What boxes and triangles are culled by: the best t stretched by kHitDistanceSlack, so
+  // a rival an ulp nearer in another leaf is still compared; primitives are judged on their t.
+  // A hit at a tiny t (a ray leaving a surface) can be off by far more than that relative slack:
+  // the bound then also covers twice the winner's own error bound on t, since a rival reporting
+  // the same t at the same spot (a duplicate, a coplanar neighbour) has an error of that size,
+  // and its box, entered no later than its exact distance, must not be culled.
+  float cull = ray.tmax;
+  const int octant = octant_of(ray.d);
+  StackEntry stack[kStackSize];
+  int top = 0;
+  stack[top++] = {0, 0, ray.tmin};
+  while (top > 0) {
+    StackEntry e = stack[--top];
+    if (e.t > cull) continue;
+    for (;;) {
+      if (e.count > 0) {
+        const uint32_t packets = (e.count + Triangle4::kLanes - 1) / Triangle4::kLanes;
+        for (uint32_t p = e.child; p < e.child + packets; ++p) {
+          const LeafPacket& info = packets_[p];
+          Triangle4Hits h;
+          triangle4_intersect(info.tri, sheared4, cull,
+                              kCheckEachCandidate ? info.entries : info.nearest, &h);
+          for (unsigned lanes = h.hit | h.retest; lanes; lanes &= lanes - 1) {
+            const uint32_t lane = uint32_t(__builtin_ctz(lanes));
+            const uint32_t prim = info.prim[lane];
+            float t_error = 0.0f;
+            TriangleHit th;
+            if (info.triangles >> lane & 1u) {
+              if (h.hit >> lane & 1u) {
+                // Tested against the cull the packet started with: a hit found in an earlier lane
+                // may have brought it nearer since.
+                if (!h.still_hits(lane, cull)) continue;
+                th = {h.t[lane], h.b0[lane], h.b1[lane], h.b2[lane]};
+                t_error = h.t_error[lane];
+              } else {
+                const Corners c = corners(p, lane);
+                if (!intersect_sheared_triangle(sheared, cull, c.p0, c.p1, c.p2, &th, &t_error))
+                  continue;
+              }
+              if (!best->beaten_by(th.t, prim)) continue;
+              if (kCheckEachCandidate) {
+                SurfaceHit h;
+                if (!intersect_primitive(scene_, prim, ray, &h)) continue;
+              }
+            } else {
+              SurfaceHit h;
+              if (!intersect_primitive(scene_, prim, ray, &h)) continue;
+              if (!best->beaten_by(h.t, prim)) continue;
+              th.t = h.t;
+            }
+            if (kPrefetchShading && prim < scene_.triangles.size()) {
+              __builtin_prefetch(&scene_.triangles[prim]);
+              for (int v = 0; v < 3; ++v) {
+                __builtin_prefetch(&scene_.positions[info.vertex[v][lane]]);
+                if (!scene_.normals.empty()) __builtin_prefetch(&scene_.normals[info.vertex[v][lane]]);
+              }
+            }
+            best->prim = prim;
+            best->t = th.t;
+            best->b0 = th.b0, best->b1 = th.b1, best->b2 = th.b2;
+            cull = std::min(ray.tmax, th.t + std::max(std::abs(th.t) * (kHitDistanceSlack - 1.0f),
+                                                      2.0f * t_error));
+          }
+        }
+        break;
+      }
+      const WideNode& node = nodes_[e.child];
+      alignas(16) float t_entry[WideNode::kWidth];
+      const unsigned mask = intersect_node(node, box_ray, cull, t_entry);
+      if (mask == 0) break;
+      // Children in the node's order for the ray's octant (front to back across each binary
+      // split, which needs no sorting of entry distances): the first visited at once, the others
+      // pushed last first, so they pop in that order; each is still culled by its entry distance
+      // when popped. Which of two coplanar rivals in different boxes is seen first can matter (a
+      // hit at a tiny t can be off by more than the relative slack), and this order is the one a
+      // front-to-back walk of the binary tree takes; the accel tests and bench check that the
+      // answers stay brute force's and the binary tree's.
+      const unsigned order = node.order_for(octant);
+      int next = -1;
+      for (int j = WideNode::kWidth - 1; j >= 0; --j) {
+        const int k = int(order >> (3 * j)) & 7;
+        if (!(mask >> k & 1u)) continue;
+        if (node.count[k] > 0)
+          prefetch_lines(&packets_[node.child[k]], leaf_lines(node.count[k]));
+        else
+          prefetch_lines(&nodes_[node.child[k]], int(sizeof(WideNode) / 64));
+        if (next >= 0) {
+          if (top == kStackSize) stack_overflow();
+          stack[top++] = {node.child[next], node.count[next], t_entry[next]};
+        }
+        next = k;
+      }
+      e = {node.child[next], node.count[next], t_entry[next]};
+    }
+  }
+}
+
+bool WideBvh::intersect(const Ray& ray, SurfaceHit* hit) const {
+  if (nodes_.empty() || !is_traceable(ray)) return false;
+  Nearest best;
+  find_nearest<false, true>(ray, &best);
+  if (!best.found()) return false;
+  // The winner's full hit, made as brute force makes it: a triangle's from the t and barycentrics
+  // its test reported (bit-identical to Part 1's, so no second test), a sphere's by Part 1.
+  if (scene_.is_triangle(best.prim)) {
+    if (triangle_surface_hit(scene_, best.prim, TriangleHit{best.t, best.b0, best.b1, best.b2},
+                             hit))
+      return true;
+  } else if (intersect_primitive(scene_, best.prim, ray, hit) && hit->t == best.t) {
+    return true;
+  }
+  // Part 1 refused to shade the winner (corners collinear in float): look again, checking each
+  // candidate, as Part 2 does.
+  Nearest careful;
+  find_nearest<true, false>(ray, &careful);
+  return careful.found() && intersect_primitive(scene_, careful.prim, ray, hit);
+}
+
+bool WideBvh::nearest(const Ray& ray, NearestHit* hit) const {
+  if (nodes_.empty() || !is_traceable(ray)) return false;
+  Nearest best;
+  find_nearest<false, false>(ray, &best);
+  if (!best.found()) return false;
+  *hit = {best.prim, best.t, best.b0, best.b1, best.b2};
+  return true;
+}
+
+bool WideBvh::occluded(const Ray& ray) const {
+  if (nodes_.empty() || !is_traceable(ray)) return false;
+  const ShearedRay4 sheared4(ray);
+  const ShearedRay& sheared = sheared4.r;
+  const Box4Ray box_ray(ray);
+  // Any occluder will do: no distances kept, no sorting.
+  StackEntry stack[kStackSize];
+  int top = 0;
+  stack[top++] = {0, 0, 0.0f};
+  while (top > 0) {
+    const StackEntry e = stack[--top];
+    if (e.count > 0) {
+      const uint32_t packets = (e.count + Triangle4::kLanes - 1) / Triangle4::kLanes;
+      for (uint32_t p = e.child; p < e.child + packets; ++p) {
+        const LeafPacket& info = packets_[p];
+        Triangle4Hits h;
+        triangle4_intersect(info.tri, sheared4, ray.tmax, info.entries, &h);
+        if (h.hit & info.triangles) return true;
+        for (unsigned lanes = h.retest; lanes; lanes &= lanes - 1) {
+          const uint32_t lane = uint32_t(__builtin_ctz(lanes));
+          if (info.triangles >> lane & 1u) {
+            TriangleHit th;
+            const Corners c = corners(p, lane);
+            if (intersect_sheared_triangle(sheared, ray.tmax, c.p0, c.p1, c.p2, &th)) return true;
+          } else if (primitive_occludes(scene_, info.prim[lane], ray)) {
+            return true;
+          }
+        }
+      }
+      continue;
+    }
+    const WideNode& node = nodes_[e.child];
+    alignas(16) float t_entry[WideNode::kWidth];
+    unsigned mask = intersect_node(node, box_ray, ray.tmax, t_entry);
+    while (mask) {
+      const int k = __builtin_ctz(mask);
+      mask &= mask - 1;
+      if (node.count[k] > 0)
+        prefetch_lines(&packets_[node.child[k]], leaf_lines(node.count[k]));
+      else
+        prefetch_lines(&nodes_[node.child[k]], int(sizeof(WideNode) / 64));
+      if (top == kStackSize) stack_overflow();
+      stack[top++] = {node.child[k], node.count[k], 0.0f};
+    }
+  }
+  return false;
+}
+
+}  // namespace pt

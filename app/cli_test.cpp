@@ -1,0 +1,216 @@
+// The pathtracer command end to end: help, every kind of bad input, and small real renders.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "framework/image/estimate_exr.h"
+#include "framework/image/image.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Two triangles (a unit quad at z = -2, facing the camera) and a camera at the origin looking
+// down -Z with a 2:1 aspect, so the default resolution is 480 x 240.
+const char* kQuadScene = R"(<?xml version="1.0"?>
+<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
+  <asset><up_axis>Y_UP</up_axis></asset>
+  <library_cameras>
+    <camera id="cam"><optics><technique_common><perspective>
+      <xfov>60</xfov><aspect_ratio>2</aspect_ratio><znear>0.1</znear><zfar>100</zfar>
+    </perspective></technique_common></optics></camera>
+  </library_cameras>
+  <library_geometries>
+    <geometry id="quad"><mesh>
+      <source id="quad-pos"><float_array id="quad-pos-a" count="12">-1 -1 -2 1 -1 -2 1 1 -2 -1 1 -2</float_array>
+        <technique_common><accessor source="#quad-pos-a" count="4" stride="3"/></technique_common></source>
+      <vertices id="quad-v"><input semantic="POSITION" source="#quad-pos"/></vertices>
+      <triangles count="2"><input semantic="VERTEX" source="#quad-v" offset="0"/><p>0 1 2 0 2 3</p></triangles>
+    </mesh></geometry>
+  </library_geometries>
+  <library_visual_scenes>
+    <visual_scene id="scene">
+      <node id="camera"><instance_camera url="#cam"/></node>
+      <node id="quad"><instance_geometry url="#quad"/></node>
+    </visual_scene>
+  </library_visual_scenes>
+  <scene><instance_visual_scene url="#scene"/></scene>
+</COLLADA>
+)";
+
+struct Outcome {
+  int exit_code = -1;
+  bool crashed = false;
+  std::string out, err;
+};
+
+std::string quote(const std::string& s) { return "'" + s + "'"; }
+
+/// A temporary folder holding the quad scene, removed at the end.
+class CliTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("pt_cli_test_" + std::to_string(getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+    std::ofstream(scene()) << kQuadScene;
+  }
+  void TearDown() override {
+    std::error_code ec;
+    fs::remove_all(dir_, ec);
+  }
+  std::string scene() const { return (dir_ / "quad.dae").string(); }
+  std::string file(const std::string& name) const { return (dir_ / name).string(); }
+
+  /// Runs the pathtracer with `args` (shell words) in the temporary folder.
+  Outcome pathtracer(const std::string& args) const {
+    const std::string binary = PT_PATHTRACER;
+    const std::string err_file = file("stderr.txt");
+    std::string command = "cd " + quote(dir_.string()) + " && " + quote(binary) + " " + args +
+                          " 2>" + quote(err_file);
+    Outcome run;
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) {
+      ADD_FAILURE() << "popen failed: " << command;
+      return run;
+    }
+    char buffer[4096];
+    size_t n;
+    while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) run.out.append(buffer, n);
+    int status = pclose(pipe);
+    run.crashed = WIFSIGNALED(status);
+    run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    std::ifstream in(err_file);
+    run.err.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    return run;
+  }
+
+  fs::path dir_;
+};
+
+}  // namespace
+
+TEST_F(CliTest, HelpListsTheCourseFlagsAndExitsZero) {
+  Outcome run = pathtracer("--help");
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  for (const char* flag : {"--samples", "--light-samples", "--threads", "--max-depth", "--resolution",
+                           "--file", "--hemisphere", "--adaptive", "--env", "--aperture",
+                           "--focal-distance", "--cell", "--info", "--seed", "--bvh", "--bvh-width", "--leaf-size",
+                           "--normals"})
+    EXPECT_NE(run.out.find(flag), std::string::npos) << flag << " missing from:\n" << run.out;
+}
+
+TEST_F(CliTest, BadInputIsNamedAndNeverACrash) {
+  struct Case {
+    std::string args;
+    int exit_code;
+    std::string must_mention;
+  };
+  const std::string s = quote(scene());
+  const Case cases[] = {
+      {"-s 0 -f a.png " + s, 2, "--samples"},
+      {"-s -3 -f a.png " + s, 2, "--samples"},
+      {"-r 0 10 -f a.png " + s, 2, "--resolution"},
+      {"-r 100000 10 -f a.png " + s, 2, "--resolution"},
+      {"-r 10 -f a.png " + s, 2, "resolution"},              // one number where two are needed
+      {"-r 40 30 -p 30 0 20 10 -f a.png " + s, 2, "--cell"},   // past the right edge
+      {"-r 40 30 -p -1 0 5 5 -f a.png " + s, 2, "--cell"},
+      {"-p 0 0 481 1 -f a.png " + s, 2, "--cell"},             // default 480 wide
+      {"-t -1 -f a.png " + s, 2, "--threads"},
+      {"-m -1 -f a.png " + s, 2, "--max-depth"},
+      {"-a 0 0.05 -f a.png " + s, 2, "--adaptive"},
+      {"-a 16 0 -f a.png " + s, 2, "--adaptive"},
+      {"-d 0 -f a.png " + s, 2, "--focal-distance"},
+      {"--bvh octree -f a.png " + s, 2, "--bvh"},
+      {"--bvh-width 3 -f a.png " + s, 2, "--bvh-width"},
+      {"--bvh-width 4 -f a.png " + s, 2, "--bvh-width"},  // the wide tree has eight children
+      {"--frobnicate -f a.png " + s, 2, "--frobnicate"},
+      {"-s many -f a.png " + s, 2, "many"},
+      {"-f a.png", 2, "scene"},                                // no scene at all
+      {"-f a.png " + quote(file("absent.dae")), 1, "absent.dae"},
+      {"-f " + quote(file("no/such/folder/a.png")) + " " + s, 1, "no/such/folder"},
+      {"-f a.jpg " + s, 2, "a.jpg"},
+      {"-f a " + s, 2, "extension"},
+      {"-e " + quote(file("missing.exr")) + " -f a.png " + s, 1, "missing.exr"},
+  };
+  for (const Case& c : cases) {
+    Outcome run = pathtracer(c.args);
+    EXPECT_FALSE(run.crashed) << c.args;
+    EXPECT_EQ(run.exit_code, c.exit_code) << c.args << "\n" << run.err;
+    EXPECT_NE(run.err.find(c.must_mention), std::string::npos)
+        << c.args << ": the message does not name '" << c.must_mention << "':\n" << run.err;
+    EXPECT_EQ(run.err.find("terminate"), std::string::npos) << c.args << "\n" << run.err;
+  }
+  EXPECT_FALSE(fs::exists(file("a.png")));  // no bad command line rendered anything
+}
+
+TEST_F(CliTest, BrokenSceneFileIsAnInputError) {
+  std::ofstream(file("broken.dae")) << "<COLLADA><library_geometries>";
+  Outcome run = pathtracer("-f a.png " + quote(file("broken.dae")));
+  EXPECT_FALSE(run.crashed);
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_NE(run.err.find("broken.dae"), std::string::npos) << run.err;
+}
+
+TEST_F(CliTest, TinyRenderWritesAPngOfTheRequestedSize) {
+  Outcome run = pathtracer("--normals -r 40 30 -s 2 -t 2 -f out.png " + quote(scene()));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("render: 40x30, 2 spp"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("rays/s"), std::string::npos) << run.out;
+  pt::Image image = pt::read_image(file("out.png"));
+  EXPECT_EQ(image.width(), 40);
+  EXPECT_EQ(image.height(), 30);
+  // The quad covers the centre, facing the camera: normal (0,0,1) shows as (0.5, 0.5, 1).
+  glm::vec3 centre = image.at(20, 15);
+  EXPECT_NEAR(centre.x, 0.5f, 0.01f);
+  EXPECT_NEAR(centre.y, 0.5f, 0.01f);
+  EXPECT_NEAR(centre.z, 1.0f, 0.01f);
+  EXPECT_EQ(image.at(0, 0), glm::vec3(0.0f));  // a corner sees past the quad: black
+}
+
+TEST_F(CliTest, WithoutFileWritesSceneStemPngAtTheSceneAspect) {
+  Outcome run = pathtracer("--normals " + quote(scene()));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("quad.png"), std::string::npos) << run.out;
+  pt::Image image = pt::read_image(file("quad.png"));
+  EXPECT_EQ(image.width(), 480);
+  EXPECT_EQ(image.height(), 240);  // 480 / the camera's aspect of 2
+}
+
+TEST_F(CliTest, ExrCarriesVarianceAndCountAndCellOnlyRendersTheCell) {
+  Outcome run = pathtracer("--normals -r 40 30 -s 3 -p 5 7 11 4 -f out.exr " + quote(scene()));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  pt::RenderEstimate e = pt::read_estimate_exr(file("out.exr"));
+  ASSERT_EQ(e.width, 40);
+  ASSERT_EQ(e.height, 30);
+  for (int y = 0; y < 30; ++y)
+    for (int x = 0; x < 40; ++x) {
+      bool inside = x >= 5 && x < 16 && y >= 7 && y < 11;
+      ASSERT_EQ(e.count[size_t(y) * 40 + size_t(x)], inside ? 3.0f : 0.0f) << x << "," << y;
+    }
+}
+
+TEST_F(CliTest, SameSeedSameImageWithOneOrTwoThreads) {
+  const std::string common = "--normals -r 32 24 -s 4 --seed 7 " + quote(scene());
+  ASSERT_EQ(pathtracer("-t 1 -f one.exr " + common).exit_code, 0);
+  ASSERT_EQ(pathtracer("-t 2 -f two.exr " + common).exit_code, 0);
+  pt::RenderEstimate one = pt::read_estimate_exr(file("one.exr"));
+  pt::RenderEstimate two = pt::read_estimate_exr(file("two.exr"));
+  EXPECT_EQ(one.mean, two.mean);
+  EXPECT_EQ(one.variance, two.variance);
+}
+
+TEST_F(CliTest, InfoDescribesTheSceneWithoutRendering) {
+  Outcome run = pathtracer("--info " + quote(scene()));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("triangles"), std::string::npos) << run.out;
+  EXPECT_EQ(run.out.find("render:"), std::string::npos) << run.out;
+  EXPECT_FALSE(fs::exists(file("quad.png")));
+}

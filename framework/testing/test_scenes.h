@@ -1,0 +1,178 @@
+// Hand-made scenes for the lighting tests, and a ray query of their own that does not depend on
+// Part 1 or 2: lighting is graded on its own, whatever state the student's intersection code is in.
+#pragma once
+
+#include <cmath>
+#include <vector>
+
+#include <boost/math/distributions/students_t.hpp>
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
+#include "framework/geometry/ray_query.h"
+#include "framework/math/float_error.h"
+#include "framework/render/pixel_stats.h"
+#include "framework/scene/scene.h"
+
+namespace pt::test {
+
+/// Brute force in double precision: every triangle by Möller–Trumbore, every sphere by the
+/// quadratic, both solved in double so that the float hit point is within rounding of the
+/// surface; p_error bounds that rounding (a few ulps of |p|), as the shadow rays need.
+class DoubleQuery final : public RayQuery {
+ public:
+  explicit DoubleQuery(const Scene& scene) : s_(scene) {}
+  mutable long intersect_calls = 0, occluded_calls = 0;
+
+  bool intersect(const Ray& ray, SurfaceHit* hit) const override {
+    ++intersect_calls;
+    return nearest(ray, hit, false);
+  }
+  bool occluded(const Ray& ray) const override {
+    ++occluded_calls;
+    SurfaceHit h;
+    return nearest(ray, &h, true);
+  }
+
+ private:
+  bool nearest(const Ray& ray, SurfaceHit* hit, bool any) const {
+    const glm::dvec3 o(ray.o), d(ray.d);
+    double best = ray.tmax;
+    bool found = false;
+    for (uint32_t i = 0; i < s_.triangles.size(); ++i) {
+      const Triangle& tri = s_.triangles[i];
+      glm::dvec3 a(s_.positions[tri.v[0]]), b(s_.positions[tri.v[1]]), c(s_.positions[tri.v[2]]);
+      glm::dvec3 e1 = b - a, e2 = c - a, pv = glm::cross(d, e2);
+      double det = glm::dot(e1, pv);
+      if (det == 0.0) continue;
+      glm::dvec3 tv = o - a;
+      double u = glm::dot(tv, pv) / det;
+      if (u < 0.0 || u > 1.0) continue;
+      glm::dvec3 qv = glm::cross(tv, e1);
+      double v = glm::dot(d, qv) / det;
+      if (v < 0.0 || u + v > 1.0) continue;
+      double t = glm::dot(e2, qv) / det;
+      if (!(t > ray.tmin && t < best)) continue;
+      best = t;
+      found = true;
+      if (any) return true;
+      glm::dvec3 p = a + u * e1 + v * e2;
+      fill(hit, t, p, glm::normalize(glm::cross(e1, e2)), i, tri.material);
+      if (!s_.normals.empty()) {
+        glm::vec3 n = float(1 - u - v) * s_.normals[tri.v[0]] + float(u) * s_.normals[tri.v[1]] +
+                      float(v) * s_.normals[tri.v[2]];
+        if (glm::dot(n, n) > 0.0f) hit->n = glm::normalize(n);
+        if (glm::dot(hit->n, hit->ng) < 0.0f) hit->n = -hit->n;
+      }
+    }
+    for (uint32_t j = 0; j < s_.spheres.size(); ++j) {
+      const Sphere& sp = s_.spheres[j];
+      glm::dvec3 oc = o - glm::dvec3(sp.center);
+      double a = glm::dot(d, d), bh = glm::dot(oc, d);
+      // Discriminant from the ray's distance to the centre, which does not cancel.
+      glm::dvec3 perp = oc - (bh / a) * d;
+      double disc = a * (double(sp.radius) * sp.radius - glm::dot(perp, perp));
+      if (disc < 0.0) continue;
+      double q = -(bh + std::copysign(std::sqrt(disc), bh));
+      double t0 = q / a, t1 = q != 0.0 ? (glm::dot(oc, oc) - double(sp.radius) * sp.radius) / q : t0;
+      if (t0 > t1) std::swap(t0, t1);
+      double t = (t0 > ray.tmin && t0 < best) ? t0 : ((t1 > ray.tmin && t1 < best) ? t1 : -1.0);
+      if (t < 0.0) continue;
+      best = t;
+      found = true;
+      if (any) return true;
+      glm::dvec3 p = o + t * d;
+      glm::dvec3 n = glm::normalize(p - glm::dvec3(sp.center));
+      p = glm::dvec3(sp.center) + double(sp.radius) * n;
+      fill(hit, t, p, n, uint32_t(s_.triangles.size() + j), sp.material);
+      hit->p_error += gamma(4) * glm::abs(glm::vec3(sp.center)) + gamma(4) * sp.radius;
+    }
+    return found;
+  }
+
+  static void fill(SurfaceHit* hit, double t, const glm::dvec3& p, const glm::dvec3& ng,
+                   uint32_t prim, uint32_t material) {
+    hit->t = float(t);
+    hit->p = glm::vec3(p);
+    hit->p_error = gamma(3) * glm::abs(hit->p);
+    hit->ng = glm::vec3(ng);
+    hit->n = hit->ng;
+    hit->primitive = prim;
+    hit->material = material;
+  }
+
+  const Scene& s_;
+};
+
+inline uint32_t add_material(Scene& s, const glm::vec3& albedo, const glm::vec3& emission = {},
+                             MaterialKind kind = MaterialKind::diffuse) {
+  Material m;
+  m.kind = kind;
+  m.albedo = albedo;
+  m.emission = emission;
+  s.materials.push_back(m);
+  return uint32_t(s.materials.size() - 1);
+}
+
+inline void add_triangle(Scene& s, glm::vec3 a, glm::vec3 b, glm::vec3 c, uint32_t material) {
+  uint32_t base = uint32_t(s.positions.size());
+  s.positions.insert(s.positions.end(), {a, b, c});
+  s.triangles.push_back(Triangle{{base, base + 1, base + 2}, material});
+}
+
+/// Quad a, b, c, d (in order around it) as two triangles.
+inline void add_quad(Scene& s, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d,
+                     uint32_t material) {
+  add_triangle(s, a, b, c, material);
+  add_triangle(s, a, c, d, material);
+}
+
+/// The closed cube [−1, 1]^3, every face of `material` (12 triangles).
+inline void add_closed_cube(Scene& s, uint32_t material) {
+  glm::vec3 v[8];
+  for (int i = 0; i < 8; ++i) v[i] = glm::vec3(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1);
+  add_quad(s, v[0], v[1], v[3], v[2], material);  // z = -1
+  add_quad(s, v[4], v[6], v[7], v[5], material);  // z = +1
+  add_quad(s, v[0], v[4], v[5], v[1], material);  // y = -1
+  add_quad(s, v[2], v[3], v[7], v[6], material);  // y = +1
+  add_quad(s, v[0], v[2], v[6], v[4], material);  // x = -1
+  add_quad(s, v[1], v[5], v[7], v[3], material);  // x = +1
+}
+
+inline Light ambient_light(const glm::vec3& radiance) {
+  Light l;
+  l.kind = LightKind::ambient;
+  l.radiance = radiance;
+  return l;
+}
+
+/// Two-sided t-test of a sample mean against a known value: true when the difference is within
+/// what chance explains at significance alpha (Student's t with n − 1 degrees of freedom).
+/// Non-finite statistics never pass.
+struct MeanCheck {
+  bool pass = false;
+  double mean = 0, stderr_ = 0, t = 0;
+};
+inline MeanCheck t_test_mean(const std::vector<double>& xs, double expected, double alpha) {
+  MeanCheck r;
+  double n = double(xs.size()), m = 0, m2 = 0;
+  for (size_t i = 0; i < xs.size(); ++i) {
+    double delta = xs[i] - m;
+    m += delta / double(i + 1);
+    m2 += delta * (xs[i] - m);
+  }
+  r.mean = m;
+  r.stderr_ = std::sqrt(m2 / (n - 1) / n);
+  if (!std::isfinite(r.mean) || !std::isfinite(r.stderr_)) return r;
+  if (r.stderr_ == 0.0) {
+    r.pass = std::abs(m - expected) <= 1e-5 * std::max(1.0, std::abs(expected));
+    return r;
+  }
+  r.t = (m - expected) / r.stderr_;
+  boost::math::students_t dist(n - 1);
+  double critical = boost::math::quantile(boost::math::complement(dist, alpha / 2));
+  r.pass = std::abs(r.t) <= critical;
+  return r;
+}
+
+}  // namespace pt::test

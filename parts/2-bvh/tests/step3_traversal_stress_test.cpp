@@ -1,0 +1,36 @@
+// Part 2, step 3 (traversal), the long check: the BVH gives brute force's answers on 100,000
+// random rays over each of the course's two bunnies (about 30,000 triangles each), where brute
+// force takes tens of seconds.
+#include <cstdio>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "parts/2-bvh/tests/bvh_check.h"
+
+namespace pt {
+namespace {
+
+using test::Case;
+using test::case_name;
+using test::kRays;
+
+class traversal : public testing::TestWithParam<Case> {};
+
+TEST_P(traversal, big_course_scene_matches_brute_force) {
+  Scene scene;
+  std::string why;
+  if (!test::try_load(std::string(PT_SHARED_SCENES_DIR) + "/" + GetParam().path, &scene, &why))
+    GTEST_SKIP() << why << " (the course's scenes live beside the project, in ../shared)";
+  test::check_against_brute_force(scene, GetParam());
+}
+
+INSTANTIATE_TEST_SUITE_P(, traversal,
+                         testing::Values(Case{"sky/CBbunny.dae", BvhSplitMethod::sah, 4, kRays},
+                                         Case{"sky/bunny.dae", BvhSplitMethod::median, 4, kRays}),
+                         case_name);
+
+}  // namespace
+}  // namespace pt

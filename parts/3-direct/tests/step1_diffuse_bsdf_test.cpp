@@ -1,0 +1,53 @@
+// Part 3, step 1 (diffuse_bsdf): the Lambertian BSDF's value, its samples against the density it
+// claims (chi-square at significance 0.01), and the estimator weight its samples give.
+#include "parts/3-direct/diffuse_bsdf.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "framework/math/frame.h"
+#include "framework/sampling/chi2_test_util.h"
+#include "framework/sampling/rng.h"
+
+namespace pt {
+namespace {
+
+// bsdf.h's convention: sample_f returns f itself (not f·cos/pdf) and sets the density; the
+// caller forms the weight f·|cosθ|/pdf, which for a Lambertian surface averages to its albedo.
+TEST(diffuse_bsdf, sample_f_returns_f_draws_its_pdf_and_the_weight_averages_to_the_albedo) {
+  DiffuseBsdf bsdf(glm::vec3(0.5f, 0.25f, 1.0f));
+  const glm::vec3 wo = glm::normalize(glm::vec3(0.3f, -0.2f, 0.8f));
+  bool consistent = true;
+  const Chi2Result r = chi2_direction_test(
+      [&](glm::vec2 u, glm::vec3* w) {
+        float pdf = 0.0f;
+        glm::vec3 f = bsdf.sample_f(wo, u, w, &pdf);
+        if (!(pdf > 0.0f)) return false;
+        // The returned value is f(wo, wi) and the density is pdf(wo, wi).
+        glm::vec3 expect_f = bsdf.f(wo, *w);
+        if (glm::length(f - expect_f) > 1e-6f || std::abs(pdf - bsdf.pdf(wo, *w)) > 1e-5f * pdf)
+          consistent = false;
+        return true;
+      },
+      [&](const glm::vec3& w) { return double(bsdf.pdf(wo, w)); }, Frame({0, 0, 1}));
+  EXPECT_TRUE(chi2_fits(r)) << r.summary;
+  EXPECT_TRUE(consistent) << "sample_f's value or density disagrees with f() or pdf()";
+  // ∫ f cos dω = albedo for a Lambertian surface: checked through the estimator's weight.
+  Rng rng(7);
+  glm::dvec3 sum(0.0);
+  const int n = 20000;
+  for (int i = 0; i < n; ++i) {
+    glm::vec3 wi;
+    float pdf;
+    glm::vec3 f = bsdf.sample_f(wo, rng.next_2d(), &wi, &pdf);
+    sum += glm::dvec3(f * wi.z / pdf);
+  }
+  EXPECT_NEAR(sum.x / n, 0.5, 1e-4);
+  EXPECT_NEAR(sum.y / n, 0.25, 1e-4);
+}
+
+}  // namespace
+}  // namespace pt

@@ -1,0 +1,27 @@
+// Part 3, step 3 (hemisphere): direct light by uniform hemisphere sampling, against scenes whose
+// answer is known.
+#include <gtest/gtest.h>
+
+#include "parts/3-direct/tests/direct_scenes.h"
+
+namespace pt {
+namespace {
+
+// A convex diffuse sphere of albedo ρ under a uniform sky L never sees itself: L_out = ρL.
+TEST(hemisphere, sphere_under_uniform_sky_is_rho_times_l) {
+  test::expect_sphere_under_sky_is_rho_times_l(true);
+}
+
+// A diffuse plane facing a uniform sky, seen from above: ρL as well (it sees only sky).
+TEST(hemisphere, plane_under_uniform_sky_is_rho_times_l) {
+  test::expect_plane_under_sky_is_rho_times_l(true);
+}
+
+// Most hemisphere directions from the ceiling's point meet the panel's back 1 cm below: they
+// must bring nothing, exactly as light sampling (which sees the light from behind) says.
+TEST(hemisphere, ceiling_over_a_panel_is_dark) {
+  EXPECT_EQ(test::ceiling_over_panel_light(true), glm::vec3(0.0f));
+}
+
+}  // namespace
+}  // namespace pt

@@ -1,0 +1,195 @@
+// Part 4, step 2 (bounces): paths of many bounces against scenes whose answer is known at every
+// depth, bounce selection, specular spheres; and never a NaN, on the cases that divide by zero in
+// careless code (zero-area lights, back-facing lights, grazing bounces, degenerate normals).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <string>
+
+#include "parts/4-global/tests/path_scenes.h"
+
+namespace pt {
+namespace {
+
+// Convex: the sphere never sees itself, so every depth gives ρL.
+TEST(bounces, sphere_under_uniform_sky_is_rho_times_l_at_every_depth) {
+  Scene s;
+  uint32_t m = test::add_material(s, glm::vec3(0.6f));
+  s.spheres.push_back(Sphere{glm::vec3(0.0f), 1.0f, m});
+  s.lights.push_back(test::ambient_light(glm::vec3(2.0f)));
+  test::Rig rig(s);
+  for (int depth = 1; depth <= 5; ++depth) {
+    rig.ctx.max_depth = depth;
+    test::expect_mean(test::sample_values(test::gi(rig.ctx), test::ray_at_unit_sphere, 10000, depth),
+                      1.2, "depth " + std::to_string(depth));
+  }
+}
+
+// Inside a closed box of albedo ρ emitting E everywhere: E(1 − ρ^(m+1))/(1 − ρ) at depth m
+// without Russian roulette, and only the m-th bounce gives ρ^m E.
+TEST(bounces, enclosure_at_depth_m_without_russian_roulette) {
+  const double rho = 0.5, E = 1.0;
+  test::Rig rig(test::enclosure(float(rho), float(E)));
+  rig.ctx.russian_roulette = false;
+  for (int m = 0; m <= 4; ++m) {
+    rig.ctx.max_depth = m;
+    test::expect_mean(test::sample_values(test::gi(rig.ctx), test::ray_from_inside, 4000, 10 + m),
+                      E * (1 - std::pow(rho, m + 1)) / (1 - rho), "depth " + std::to_string(m));
+    rig.ctx.only_bounce = m;
+    rig.ctx.max_depth = 4;
+    test::expect_mean(test::sample_values(test::gi(rig.ctx), test::ray_from_inside, 4000, 20 + m),
+                      E * std::pow(rho, m), "only bounce " + std::to_string(m));
+    rig.ctx.only_bounce = -1;
+  }
+}
+
+// A lossless glass sphere or a mirror of reflectance R in a uniform sky: L and RL.
+TEST(bounces, specular_spheres_under_uniform_sky) {
+  for (MaterialKind kind : {MaterialKind::glass, MaterialKind::mirror}) {
+    Scene s;
+    uint32_t m = test::add_material(s, glm::vec3(0.0f), glm::vec3(0.0f), kind);
+    s.materials[m].reflectance = glm::vec3(kind == MaterialKind::mirror ? 0.8f : 1.0f);
+    s.spheres.push_back(Sphere{glm::vec3(0.0f), 1.0f, m});
+    s.lights.push_back(test::ambient_light(glm::vec3(1.0f)));
+    test::Rig rig(s);
+    rig.ctx.max_depth = 100;
+    test::expect_mean(test::sample_values(test::gi(rig.ctx), test::ray_at_unit_sphere, 10000, 9),
+                      kind == MaterialKind::mirror ? 0.8 : 1.0, to_string(kind));
+  }
+}
+
+// --- Never a NaN: the full estimator (depth 5, every strategy) ---------------------------------
+
+// Renders `n` random rays at the scene with every combination of strategies, and fails on the
+// first non-finite or negative value.
+void expect_all_finite(const Scene& scene, const std::function<Ray(Rng&)>& make_ray, int n = 3000) {
+  test::Rig rig(scene);
+  rig.ctx.max_depth = 5;
+  rig.ctx.light_samples = 2;
+  for (int mode = 0; mode < 4; ++mode) {
+    rig.ctx.hemisphere = mode == 1;
+    rig.ctx.mis = mode == 2;
+    rig.ctx.russian_roulette = mode != 3;
+    Rng rng(uint64_t(mode) + 1, 5);
+    for (int i = 0; i < n; ++i) {
+      Ray r = make_ray(rng);
+      glm::vec3 L = estimate_global_illumination(rig.ctx, r, rng);
+      for (int c = 0; c < 3; ++c)
+        ASSERT_TRUE(std::isfinite(L[c]) && L[c] >= 0.0f)
+            << "mode " << mode << ", ray " << i << ": (" << L.x << ", " << L.y << ", " << L.z << ")";
+    }
+  }
+}
+
+Ray ray_at_floor(Rng& g) {
+  Ray r;
+  r.o = glm::vec3(0.0f, 0.0f, 2.0f);
+  r.d = glm::normalize(glm::vec3(g.next_float() - 0.5f, g.next_float() - 0.5f, -1.0f));
+  return r;
+}
+
+Scene floor_scene() {
+  Scene s;
+  uint32_t m = test::add_material(s, glm::vec3(0.7f));
+  test::add_quad(s, {-2, -2, 0}, {2, -2, 0}, {2, 2, 0}, {-2, 2, 0}, m);
+  return s;
+}
+
+TEST(bounces, no_nan_with_zero_area_lights) {
+  Scene s = floor_scene();
+  Light l;
+  l.kind = LightKind::area;
+  l.position = glm::vec3(0, 0, 1);
+  l.edge_u = glm::vec3(0.0f);  // no area
+  s.lights.push_back(l);
+  uint32_t lamp = test::add_material(s, glm::vec3(0.5f), glm::vec3(5.0f));
+  test::add_triangle(s, {0, 0, 1}, {1, 1, 1}, {2, 2, 1}, lamp);  // collinear corners
+  s.spheres.push_back(Sphere{glm::vec3(0, 0, 1), 0.0f, lamp});   // a point of a sphere
+  Light ok;
+  ok.kind = LightKind::point;
+  ok.position = glm::vec3(0, 0, 1);
+  s.lights.push_back(ok);
+  LightSet lights(s);
+  EXPECT_EQ(lights.lights().size(), 1u) << "only the point light can emit";
+  expect_all_finite(s, ray_at_floor);
+}
+
+TEST(bounces, no_nan_with_back_facing_and_edge_on_lights) {
+  Scene s = floor_scene();
+  Light up;  // an area light facing away from the floor
+  up.kind = LightKind::area;
+  up.position = glm::vec3(0, 0, 1);
+  up.direction = glm::vec3(0, 0, 1);
+  s.lights.push_back(up);
+  Light edge_on = up;  // a light in the floor's plane, seen only edge-on
+  edge_on.position = glm::vec3(3, 0, 0);
+  edge_on.edge_u = glm::vec3(1, 0, 0);
+  edge_on.edge_v = glm::vec3(0, 0, 1);
+  edge_on.direction = glm::vec3(0, 1, 0);
+  s.lights.push_back(edge_on);
+  Light at_surface;  // a point light on the floor itself: distance zero for some shading points
+  at_surface.kind = LightKind::point;
+  at_surface.position = glm::vec3(0, 0, 0);
+  s.lights.push_back(at_surface);
+  expect_all_finite(s, ray_at_floor);
+}
+
+TEST(bounces, no_nan_with_grazing_rays_and_bounces) {
+  Scene s = floor_scene();
+  s.lights.push_back(test::ambient_light(glm::vec3(1.0f)));
+  uint32_t glass = test::add_material(s, glm::vec3(0), glm::vec3(0), MaterialKind::glass);
+  uint32_t mirror = test::add_material(s, glm::vec3(0), glm::vec3(0), MaterialKind::mirror);
+  s.spheres.push_back(Sphere{glm::vec3(-1, 0, 0.5f), 0.5f, glass});
+  s.spheres.push_back(Sphere{glm::vec3(1, 0, 0.5f), 0.5f, mirror});
+  expect_all_finite(s, [](Rng& g) {
+    Ray r;  // rays nearly parallel to the floor, and tangent to the spheres
+    r.o = glm::vec3(-3.0f, g.next_float() - 0.5f, 1e-6f + g.next_float() * 1e-3f);
+    r.d = glm::normalize(glm::vec3(1.0f, 0.0f, -1e-4f * g.next_float()));
+    if (g.next_float() < 0.5f) r.o.z = 0.5f + (g.next_float() < 0.5f ? 0.5f : -0.5f);
+    return r;
+  });
+}
+
+TEST(bounces, no_nan_with_degenerate_shading_normals) {
+  Scene s = floor_scene();
+  s.normals = {glm::vec3(0.0f), glm::vec3(NAN), glm::vec3(0, 0, -1), glm::vec3(1e-30f),
+               glm::vec3(0.0f), glm::vec3(0, 0, -1)};
+  s.lights.push_back(test::ambient_light(glm::vec3(1.0f)));
+  Light p;
+  p.kind = LightKind::point;
+  p.position = glm::vec3(0, 0, 1);
+  s.lights.push_back(p);
+  expect_all_finite(s, ray_at_floor);
+}
+
+// The hit itself may carry a broken normal (a loader's zero normal, a NaN from a degenerate
+// triangle): the shading point falls back to a usable frame and the estimate stays finite.
+TEST(bounces, shading_point_repairs_broken_normals) {
+  Scene s = floor_scene();
+  s.lights.push_back(test::ambient_light(glm::vec3(1.0f)));
+  test::Rig rig(s);
+  rig.ctx.max_depth = 3;
+  Ray ray;
+  ray.o = glm::vec3(0, 0, 1);
+  for (glm::vec3 n : {glm::vec3(0.0f), glm::vec3(NAN), glm::vec3(INFINITY, 0, 0)}) {
+    for (glm::vec3 ng : {glm::vec3(0, 0, 1), glm::vec3(0.0f), glm::vec3(NAN)}) {
+      SurfaceHit hit;
+      hit.p = glm::vec3(0.0f);
+      hit.n = n;
+      hit.ng = ng;
+      hit.material = 0;
+      ShadingPoint sp(s, ray, hit);
+      for (int c = 0; c < 3; ++c) {
+        ASSERT_TRUE(std::isfinite(sp.wo[c]) && std::isfinite(sp.frame.n[c]));
+        ASSERT_TRUE(std::isfinite(sp.frame.s[c]) && std::isfinite(sp.frame.t[c]));
+      }
+      Rng rng(1);
+      glm::vec3 L = at_least_one_bounce_radiance(rig.ctx, sp, 1, rng);
+      for (int c = 0; c < 3; ++c) ASSERT_TRUE(std::isfinite(L[c]));
+    }
+  }
+}
+
+}  // namespace
+}  // namespace pt

@@ -1,0 +1,38 @@
+#include "pipeline/4-global/integrator.h"
+
+#include <algorithm>
+
+#include "framework/render/normal_shading.h"
+#include "parts/4-global/global_illumination.h"
+#include "pipeline/3-direct/direct_integrator.h"
+
+namespace pt {
+
+std::unique_ptr<Integrator> Integrator::create(const RenderSettings& settings, const Scene& scene,
+                                               const RayQuery& query, std::string* error) {
+  std::unique_ptr<Integrator> in(new Integrator());
+  if (!settings.environment_map.empty()) {
+    in->environment_ = std::make_unique<EnvironmentMap>();
+    if (!in->environment_->load(settings.environment_map, error)) return nullptr;
+  }
+  in->lights_ = std::make_unique<LightSet>(scene, in->environment_.get());
+  in->ctx_.reset(new LightingContext{scene, query, *in->lights_});
+  LightingContext& c = *in->ctx_;
+  c.light_samples = std::max(1, settings.light_samples);
+  c.hemisphere = settings.hemisphere_sampling;
+  c.mis = settings.mis;
+  c.max_depth = std::max(0, settings.max_depth);
+  c.russian_roulette = settings.russian_roulette;
+  c.only_bounce = settings.only_bounce;
+  in->normals_ = settings.shading == ShadingMode::normals || in->lights_->empty();
+  in->direct_only_ = c.max_depth <= 1 && !c.mis;
+  return in;
+}
+
+glm::vec3 Integrator::radiance(const Ray& ray, Rng& rng) const {
+  if (normals_) return normal_shading(ctx_->query, ray);
+  if (direct_only_) return estimate_direct_illumination(*ctx_, ray, rng);
+  return estimate_global_illumination(*ctx_, ray, rng);
+}
+
+}  // namespace pt
