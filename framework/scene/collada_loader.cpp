@@ -135,7 +135,8 @@ struct Expansion {
 /// arrays, geometries and materials shared by several instances are read once.
 class ColladaReader {
  public:
-  ColladaReader(std::string name, const WarningSink& warn) : name_(std::move(name)), warn_(warn) {}
+  ColladaReader(std::string name, const WarningSink& warn, const LoadLimits& limits)
+      : name_(std::move(name)), warn_(warn), limits_(limits) {}
 
   /// Parses XML held in memory.
   Scene read_string(const std::string& xml) {
@@ -350,6 +351,7 @@ class ColladaReader {
   mutable const std::string* text_ = nullptr;
   std::string name_;
   const WarningSink& warn_;
+  const LoadLimits limits_;
   pugi::xml_document doc_;
   std::unordered_map<std::string_view, pugi::xml_node> ids_;
   std::unordered_map<const void*, std::vector<float>> arrays_;
@@ -819,12 +821,12 @@ void ColladaReader::check_expansion(pugi::xml_node vs) {
     total.add(expansion(child, 0));
     top.push_back(child);
   }
-  const bool too_many_primitives = total.primitives > kMaxInstancedPrimitives;
-  if (!too_many_primitives && total.nodes <= kMaxInstancedNodes) return;
+  const bool too_many_primitives = total.primitives > limits_.primitives;
+  if (!too_many_primitives && total.nodes <= limits_.nodes) return;
   // Name the way down to where the expansion fans out: from the top, the node that expands to
   // the most, as long as that alone is past the limit.
   auto size = [&](const Expansion& e) { return too_many_primitives ? e.primitives : e.nodes; };
-  const uint64_t limit = too_many_primitives ? kMaxInstancedPrimitives : kMaxInstancedNodes;
+  const uint64_t limit = too_many_primitives ? limits_.primitives : limits_.nodes;
   std::vector<std::pair<pugi::xml_node, uint64_t>> chain;
   std::vector<pugi::xml_node> children = top;
   for (;;) {
@@ -1340,12 +1342,13 @@ Scene ColladaReader::read(pugi::xml_parse_result res) {
 
 }  // namespace
 
-Scene load_collada_string(const std::string& xml, const std::string& name, const WarningSink& warn) {
-  ColladaReader reader(name, warn);
+Scene load_collada_string(const std::string& xml, const std::string& name, const WarningSink& warn,
+                          const LoadLimits& limits) {
+  ColladaReader reader(name, warn, limits);
   return reader.read_string(xml);
 }
 
-Scene load_collada(const std::string& path, const WarningSink& warn) {
+Scene load_collada(const std::string& path, const WarningSink& warn, const LoadLimits& limits) {
   namespace fs = std::filesystem;
   std::error_code ec;
   fs::file_status st = fs::status(path, ec);
@@ -1356,7 +1359,7 @@ Scene load_collada(const std::string& path, const WarningSink& warn) {
     throw SceneError(path, "", "is not a regular file (a device or a pipe?), not a scene file");
   if (!std::ifstream(path, std::ios::binary))
     throw SceneError(path, "", "cannot be opened for reading (permissions?)");
-  ColladaReader reader(path, warn);
+  ColladaReader reader(path, warn, limits);
   return reader.read_file(path);
 }
 

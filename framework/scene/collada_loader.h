@@ -23,6 +23,14 @@ using WarningSink = std::function<void(const std::string&)>;
 constexpr uint64_t kMaxInstancedPrimitives = uint64_t(1) << 24;
 constexpr uint64_t kMaxInstancedNodes = uint64_t(1) << 24;
 
+/// The instancing limits a load applies. A caller may lower them: the fuzz target does, so that
+/// one input (a valid scene of millions of instances) stays quick under its sanitizers and the
+/// limit's error path is reached often.
+struct LoadLimits {
+  uint64_t primitives = kMaxInstancedPrimitives;
+  uint64_t nodes = kMaxInstancedNodes;
+};
+
 /// Loads a .dae file into a Scene in world space. Throws SceneError naming the file and the
 /// element for anything it cannot make sense of: a missing or unreadable file, XML that does
 /// not parse, an index out of range, a url="#id" that points nowhere, a number that is not one
@@ -42,10 +50,11 @@ constexpr uint64_t kMaxInstancedNodes = uint64_t(1) << 24;
 /// Every mesh vertex gets a shading normal (the file's, through the inverse transpose, or the
 /// face normal where the file has none), so Scene::normals is the size of Scene::positions.
 /// Corners that name the same position in the file get bit-identical floats.
-Scene load_collada(const std::string& path, const WarningSink& warn = {});
+Scene load_collada(const std::string& path, const WarningSink& warn = {},
+                   const LoadLimits& limits = {});
 
 /// The same, from a string in memory; `name` stands in for the file name in messages.
 Scene load_collada_string(const std::string& xml, const std::string& name,
-                          const WarningSink& warn = {});
+                          const WarningSink& warn = {}, const LoadLimits& limits = {});
 
 }  // namespace pt

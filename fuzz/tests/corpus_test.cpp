@@ -12,6 +12,7 @@
 
 #include "framework/scene/collada_loader.h"
 #include "framework/scene/scene_error.h"
+#include "fuzz/fuzz_limits.h"
 #include "fuzz/scene_invariants.h"
 
 namespace pt {
@@ -27,11 +28,12 @@ std::vector<std::string> files_in(const std::string& folder) {
   return files;
 }
 
-/// Loads `path`: a scene that keeps every promise, or a SceneError that names the file.
+/// Loads `path` as the fuzz target does (its limits): a scene that keeps every promise, or a
+/// SceneError that names the file.
 void expect_loads_or_refuses(const std::string& path, bool* loaded) {
   *loaded = false;
   try {
-    const Scene s = load_collada(path, [](const std::string&) {});
+    const Scene s = load_collada(path, [](const std::string&) {}, fuzz::kFuzzLimits);
     EXPECT_EQ(fuzz::scene_invariant_violation(s), "");
     *loaded = true;
   } catch (const SceneError& e) {
