@@ -472,6 +472,9 @@ void ColladaReader::read_effect(pugi::xml_node effect, Material& m) {
         if (pugi::xml_node e = bsdf.child(field)) out = one_float(e);
       };
       if (kind == "emission") {
+        // The course's emission BSDF: it glows and reflects nothing. The phong diffuse colour
+        // Blender writes beside it is kept in albedo but not rendered.
+        m.kind = MaterialKind::emission;
         vec("radiance", m.emission);
       } else if (kind == "mirror") {
         m.kind = MaterialKind::mirror;

@@ -30,6 +30,9 @@ ShadingPoint::ShadingPoint(const Scene& scene, const Ray& ray, const SurfaceHit&
       mirror_ = MirrorBsdf(material->reflectance);
       bsdf = &mirror_;
       break;
+    case MaterialKind::emission:  // the course's emitters glow and reflect nothing
+      bsdf = &black_;
+      break;
     default:  // diffuse; microfacet is rendered by its diffuse albedo until a part renders it
       diffuse_ = DiffuseBsdf(material->albedo);
       bsdf = &diffuse_;

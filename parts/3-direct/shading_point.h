@@ -3,6 +3,7 @@
 #pragma once
 
 #include "3-direct/diffuse_bsdf.h"
+#include "bsdf/black.h"
 #include "bsdf/specular.h"
 #include "geometry/ray_query.h"
 #include "geometry/surface_hit.h"
@@ -45,6 +46,7 @@ struct ShadingPoint {
   DiffuseBsdf diffuse_;
   MirrorBsdf mirror_;
   GlassBsdf glass_;
+  BlackBsdf black_;
 };
 
 }  // namespace pt

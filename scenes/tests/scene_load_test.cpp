@@ -73,6 +73,7 @@ void expect_cornell_box(const pt::Scene& s, const std::string& name) {
   const pt::Material* panel = material_named(s, "light");
   ASSERT_NE(panel, nullptr);
   EXPECT_EQ(panel->emission, glm::vec3(10.0f));
+  EXPECT_EQ(panel->kind, pt::MaterialKind::emission) << "the panel glows and reflects nothing";
   const pt::Material* left = material_named(s, "leftWall");
   ASSERT_NE(left, nullptr);
   EXPECT_EQ(left->albedo, glm::vec3(0.6f, 0.2f, 0.2f));

@@ -7,6 +7,7 @@
 #include "3-direct/direct_lighting.h"
 #include "3-direct/tests/lighting_harness.h"
 #include "render/pixel_stats.h"
+#include "scene/collada_loader.h"
 #include "stats/block_ttest.h"
 
 namespace pt {
@@ -98,6 +99,60 @@ TEST(Part3Direct, CeilingOverAPanelIsDarkByBothEstimators) {
     for (int i = 0; i < 64; ++i) sum += one_bounce_radiance(rig.ctx, sp, rng);
     EXPECT_EQ(sum, glm::vec3(0.0f)) << (hemisphere ? "hemisphere" : "light importance");
   }
+}
+
+// A closed box whose six faces are one CGL emitter (radiance E) with a phong diffuse colour a, as
+// Blender writes the course's light panels. The course reads such a material as emission only:
+// every ray inside sees exactly E. Were the panels to reflect their diffuse colour as well, the
+// irradiance πE inside the uniform enclosure would add a·E to every direct-light estimate
+// (E/(1 − a) over all bounces).
+constexpr char kEmitterBox[] = R"(<?xml version="1.0"?>
+<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
+  <library_effects><effect id="glow-fx"><profile_COMMON><technique sid="common"><phong>
+    <emission><color>0 0 0 1</color></emission><diffuse><color>0.8 0.8 0.8 1</color></diffuse>
+  </phong></technique></profile_COMMON>
+  <extra><technique profile="CGL"><emission><radiance>2 2 2</radiance></emission></technique></extra>
+  </effect></library_effects>
+  <library_materials><material id="glow" name="glow"><instance_effect url="#glow-fx"/></material></library_materials>
+  <library_geometries><geometry id="box"><mesh>
+    <source id="box-p"><float_array id="box-pa" count="24">-1 -1 -1 1 -1 -1 -1 1 -1 1 1 -1 -1 -1 1 1 -1 1 -1 1 1 1 1 1</float_array>
+      <technique_common><accessor source="#box-pa" count="8" stride="3"/></technique_common></source>
+    <vertices id="box-v"><input semantic="POSITION" source="#box-p"/></vertices>
+    <polylist material="glow" count="6"><input semantic="VERTEX" source="#box-v" offset="0"/>
+      <vcount>4 4 4 4 4 4</vcount><p>0 2 3 1 4 5 7 6 0 1 5 4 2 6 7 3 0 4 6 2 1 3 7 5</p></polylist>
+  </mesh></geometry></library_geometries>
+  <library_visual_scenes><visual_scene id="s"><node id="n"><instance_geometry url="#box">
+    <bind_material><technique_common><instance_material symbol="glow" target="#glow"/></technique_common></bind_material>
+  </instance_geometry></node></visual_scene></library_visual_scenes>
+  <scene><instance_visual_scene url="#s"/></scene>
+</COLLADA>)";
+
+TEST(Part3Direct, EmitterPanelsReflectNothingInAClosedBox) {
+  const double E = 2.0, a = 0.8;
+  const Scene box = load_collada_string(kEmitterBox, "emitter_box.dae", [](const std::string&) {});
+  ASSERT_EQ(box.triangles.size(), 12u);
+  for (bool hemisphere : {false, true}) {
+    test::Rig rig(box);
+    rig.ctx.hemisphere = hemisphere;
+    rig.ctx.light_samples = 4;
+    auto xs = test::sample_values([&](const Ray& r, Rng& g) { return direct_only(rig.ctx, r, g); },
+                                  test::ray_from_inside, 4000, 3);
+    auto c = test::t_test_mean(xs, E, kAlpha);
+    EXPECT_TRUE(c.pass) << (hemisphere ? "hemisphere" : "importance") << ": mean " << c.mean
+                        << " ± " << c.stderr_ << ", expected E = " << E
+                        << " (E(1 + a) = " << E * (1 + a) << " if the panels reflected)";
+  }
+  // The known amount the panels' reflection would add, seen by the same harness: the box drawn
+  // with its diffuse colour (the reading this replaces) gives E(1 + a).
+  Scene reflecting = box;
+  for (Material& m : reflecting.materials) m.kind = MaterialKind::diffuse;
+  test::Rig rig(reflecting);
+  rig.ctx.light_samples = 4;
+  auto xs = test::sample_values([&](const Ray& r, Rng& g) { return direct_only(rig.ctx, r, g); },
+                                test::ray_from_inside, 4000, 4);
+  auto c = test::t_test_mean(xs, E * (1 + a), kAlpha);
+  EXPECT_TRUE(c.pass) << "reflecting panels: mean " << c.mean << " ± " << c.stderr_
+                      << ", expected E(1 + a) = " << E * (1 + a);
 }
 
 // A convex diffuse sphere of albedo ρ under a uniform sky L never sees itself: L_out = ρL.
