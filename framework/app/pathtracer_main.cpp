@@ -13,6 +13,7 @@
 #include "image/estimate_exr.h"
 #include "image/image.h"
 #include "image/sample_rate.h"
+#include "lights/light_set.h"
 #include "render/film.h"
 #include "render/progress.h"
 #include "render/tile_renderer.h"
@@ -55,6 +56,9 @@ int run(int argc, char** argv) {
   if (settings.shading == ShadingMode::light) {
     std::string fallback = materials_falling_back(scene, rendered_material_kinds(settings));
     if (!fallback.empty()) std::cerr << fallback << "\n";
+    const LightSet lights(scene);  // only for what it says; the render builds its own
+    for (const std::string& w : lights.warnings())
+      std::cerr << "warning: " << command.scene_path << ": " << w << "\n";
   }
 
   std::unique_ptr<RayQuery> query = make_ray_query(settings, scene);

@@ -750,6 +750,7 @@ void ColladaReader::add_mesh(const GeometryData& g, pugi::xml_node geom, const g
 void ColladaReader::instance_light(pugi::xml_node inst, const glm::mat4& m) {
   pugi::xml_node el = expect(resolve(inst, "url"), "light", inst);
   Light light;
+  light.name = el.attribute("name") ? el.attribute("name").value() : el.attribute("id").value();
   glm::mat3 linear(m);
   light.position = glm::vec3(m * glm::vec4(0, 0, 0, 1));
   if (!std::isfinite(light.position.x + light.position.y + light.position.z))

@@ -14,17 +14,6 @@ float power_heuristic(int n_a, float pdf_a, int n_b, float pdf_b) {
   return denom > 0.0f ? (a * a) / denom : 0.0f;
 }
 
-namespace {
-
-// Whether a BSDF-sampled ray can reach light l at all.
-bool hittable(const SampledLight& l) {
-  if (l.is_delta()) return false;
-  if (l.kind == SampledLightKind::parallelogram) return l.has_panel;
-  return true;
-}
-
-}  // namespace
-
 glm::vec3 estimate_direct_mis(const LightingContext& ctx, const ShadingPoint& sp, Rng& rng) {
   if (sp.bsdf->is_delta()) return glm::vec3(0.0f);
   const auto& lights = ctx.lights.lights();
@@ -40,7 +29,7 @@ glm::vec3 estimate_direct_mis(const LightingContext& ctx, const ShadingPoint& sp
       glm::vec3 f = sp.bsdf->f(sp.wo, wi);
       if (f == glm::vec3(0.0f) || ls.L == glm::vec3(0.0f)) continue;
       if (!ctx.lights.unoccluded(ctx.query, spawn_shadow_ray(sp.hit, ls), k)) continue;
-      float w = hittable(lights[k]) ? power_heuristic(n, ls.pdf, ns, sp.bsdf->pdf(sp.wo, wi)) : 1.0f;
+      float w = lights[k].can_be_hit() ? power_heuristic(n, ls.pdf, ns, sp.bsdf->pdf(sp.wo, wi)) : 1.0f;
       sum += f * ls.L * wi.z * (w / ls.pdf);
     }
     L += sum / float(n);
@@ -63,7 +52,7 @@ glm::vec3 estimate_direct_mis(const LightingContext& ctx, const ShadingPoint& sp
     };
     if (ctx.query.intersect(r, &h)) {
       int k = ctx.lights.light_of_primitive(h.primitive);
-      if (k >= 0 && hittable(lights[k])) add(k, &h);
+      if (k >= 0 && lights[k].can_be_hit()) add(k, &h);
     } else {
       for (int k = 0; k < int(lights.size()); ++k)
         if (lights[k].is_infinite()) add(k, nullptr);

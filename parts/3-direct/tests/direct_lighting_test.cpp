@@ -155,6 +155,52 @@ TEST(Part3Direct, EmitterPanelsReflectNothingInAClosedBox) {
                       << ", expected E(1 + a) = " << E * (1 + a);
 }
 
+// CBcoil's panel and light disagree (test::disagreeing_panel_scene). The camera sees the panel's
+// shape glowing with the light's radiance, from below only; where the light reaches beyond the
+// panel there is nothing to see.
+TEST(Part3Direct, TheCameraSeesThePanelsShapeWithItsLightsRadiance) {
+  using P = test::DisagreeingPanel;
+  test::Rig rig(test::disagreeing_panel_scene());
+  auto look = [&](float x, float y, float z, float dz, SurfaceHit* hit) {
+    Ray r;
+    r.o = glm::vec3(x, y, z);
+    r.d = glm::vec3(0.0f, 0.0f, dz);
+    return rig.query.intersect(r, hit) ? zero_bounce_radiance(rig.ctx, r, *hit) : glm::vec3(-1.0f);
+  };
+  SurfaceHit hit;
+  EXPECT_EQ(look(0.1f, 0.1f, 0.2f, 1.0f, &hit), glm::vec3(P::kLightRadiance)) << "the panel from below";
+  EXPECT_EQ(look(0.35f, 0.0f, 0.2f, 1.0f, &hit), glm::vec3(P::kLightRadiance))
+      << "the panel where the light does not reach";
+  EXPECT_EQ(look(0.0f, 0.35f, 0.2f, 1.0f, &hit), glm::vec3(-1.0f))
+      << "where only the light reaches, nothing is there to be seen";
+  EXPECT_EQ(look(0.1f, 0.1f, 0.7f, -1.0f, &hit), glm::vec3(0.0f)) << "the panel from above";
+}
+
+// The floor beside the panel, lit by it: ρ·L·F with the light's radiance over the panel's
+// rectangle (F by the corner formula), whichever estimator (light sampling of the light's own
+// rectangle would give 13% less, hemisphere sampling of the panel's emission twice as much).
+TEST(Part3Direct, EveryEstimatorSeesThePanelsShapeWithItsLightsRadiance) {
+  using P = test::DisagreeingPanel;
+  const double expected = P::floor_radiance(0.4, 0.0);
+  for (bool hemisphere : {false, true}) {
+    test::Rig rig(test::disagreeing_panel_scene());
+    rig.ctx.hemisphere = hemisphere;
+    rig.ctx.light_samples = 4;
+    auto xs = test::sample_values(
+        [&](const Ray& r, Rng& g) { return direct_only(rig.ctx, r, g); },
+        [](Rng&) {
+          Ray r;
+          r.o = glm::vec3(0.4f, 0.0f, 0.2f);
+          r.d = glm::vec3(0.0f, 0.0f, -1.0f);
+          return r;
+        },
+        hemisphere ? 40000 : 10000, 9);
+    auto c = test::t_test_mean(xs, expected, kAlpha);
+    EXPECT_TRUE(c.pass) << (hemisphere ? "hemisphere" : "importance") << ": mean " << c.mean
+                        << " ± " << c.stderr_ << ", expected " << expected;
+  }
+}
+
 // A convex diffuse sphere of albedo ρ under a uniform sky L never sees itself: L_out = ρL.
 void check_sphere_under_sky(bool hemisphere) {
   const float rho = 0.6f, L = 2.0f;

@@ -109,6 +109,43 @@ TEST(Part4Global, SpecularSpheresUnderUniformSky) {
   }
 }
 
+// CBcoil's panel and light disagree (test::disagreeing_panel_scene): MIS's BSDF samples reach the
+// panel and its light samples the same panel, with the light's radiance, so MIS lights the floor
+// as light sampling does: ρ·L·F over the panel's rectangle.
+TEST(Part4Global, MisSeesThePanelsShapeWithItsLightsRadiance) {
+  using P = test::DisagreeingPanel;
+  test::Rig rig(test::disagreeing_panel_scene());
+  rig.ctx.mis = true;
+  rig.ctx.light_samples = 4;
+  rig.ctx.max_depth = 1;
+  auto floor_point = [](Rng&) {
+    Ray r;
+    r.o = glm::vec3(0.4f, 0.0f, 0.2f);
+    r.d = glm::vec3(0.0f, 0.0f, -1.0f);
+    return r;
+  };
+  expect_mean(test::sample_values(gi(rig.ctx), floor_point, 10000, 12), P::floor_radiance(0.4, 0.0),
+              "MIS, direct light on the floor");
+}
+
+// The same room with a mirror floor: the camera sees the panel in the mirror with the radiance
+// light sampling gives it, the light's (5, not the panel's 10), by every estimator.
+TEST(Part4Global, AMirrorShowsThePanelWithItsLightsRadiance) {
+  using P = test::DisagreeingPanel;
+  for (int mode = 0; mode < 3; ++mode) {
+    test::Rig rig(test::disagreeing_panel_scene(MaterialKind::mirror));
+    rig.ctx.hemisphere = mode == 1;
+    rig.ctx.mis = mode == 2;
+    rig.ctx.max_depth = 1;
+    Ray r;
+    r.o = glm::vec3(0.1f, 0.05f, 0.2f);
+    r.d = glm::normalize(glm::vec3(0.05f, 0.02f, -1.0f));
+    Rng rng(3);
+    const glm::vec3 L = estimate_global_illumination(rig.ctx, r, rng);
+    EXPECT_NEAR(L.x, P::kLightRadiance, 1e-4f) << "mode " << mode;
+  }
+}
+
 TEST(Part4Global, DepthOneSamplesNoBounce) {
   test::Rig rig(enclosure(0.5f, 1.0f));
   rig.ctx.max_depth = 1;
