@@ -51,7 +51,10 @@ int run(int argc, char** argv) {
     apply_default_resolution(scene.camera.aspect, &settings);
     check_cell(settings);
   }
-  if (!command.file_camera) centre_camera_on(scene.bounds(), &scene.camera);
+  if (command.course_view)
+    place_course_camera(scene.bounds(), settings.width, settings.height, &scene.camera);
+  else if (!command.file_camera)
+    centre_camera_on(scene.bounds(), &scene.camera);
   apply_lens(settings, &scene.camera);
   if (settings.shading == ShadingMode::light) {
     std::string fallback = materials_falling_back(scene, rendered_material_kinds(settings));
