@@ -103,7 +103,7 @@ TEST_F(CliTest, HelpListsTheCourseFlagsAndExitsZero) {
   for (const char* flag : {"--samples", "--light-samples", "--threads", "--max-depth", "--resolution",
                            "--file", "--hemisphere", "--adaptive", "--env", "--aperture",
                            "--focal-distance", "--cell", "--info", "--seed", "--bvh", "--bvh-width", "--leaf-size",
-                           "--normals"})
+                           "--normals", "--file-camera", "--course-view"})
     EXPECT_NE(run.out.find(flag), std::string::npos) << flag << " missing from:\n" << run.out;
 }
 
@@ -139,6 +139,7 @@ TEST_F(CliTest, BadInputIsNamedAndNeverACrash) {
       {"-f a.jpg " + s, 2, "a.jpg"},
       {"-f a " + s, 2, "extension"},
       {"-e " + quote(file("missing.exr")) + " -f a.png " + s, 1, "missing.exr"},
+      {"--course-view --file-camera -f a.png " + s, 2, "--file-camera"},  // two placements
   };
   for (const Case& c : cases) {
     Outcome run = pathtracer(c.args);

@@ -17,6 +17,7 @@
 #include "app/render_job.h"
 #include "framework/image/image.h"
 #include "framework/render/available_memory.h"
+#include "framework/lights/light_set.h"
 #include "framework/render/film.h"
 #include "framework/render/progress.h"
 #include "framework/render/sample_rate.h"
@@ -76,12 +77,13 @@ int run(int argc, char** argv) {
     check_cell(settings);
     check_memory();
   }
-  if (!command.file_camera) {
-    try {
+  try {
+    if (command.course_view)
+      place_course_camera(scene.bounds(), settings.width, settings.height, &scene.camera);
+    else if (!command.file_camera)
       centre_camera_on(scene.bounds(), &scene.camera);
-    } catch (const std::range_error& e) {
-      throw SceneError(command.scene_path, "", e.what());
-    }
+  } catch (const std::range_error& e) {
+    throw SceneError(command.scene_path, "", e.what());
   }
   apply_lens(settings, &scene.camera);
   if (settings.shading == ShadingMode::light) {
@@ -89,6 +91,9 @@ int run(int argc, char** argv) {
     if (!fallback.empty()) std::cerr << fallback << "\n";
     std::string dark = no_light_warning(settings, scene);
     if (!dark.empty()) std::cerr << "warning: " << dark << "\n";
+    const LightSet lights(scene);  // only for what it says; the render builds its own
+    for (const std::string& w : lights.warnings())
+      std::cerr << "warning: " << command.scene_path << ": " << w << "\n";
   }
 
   std::unique_ptr<RayQuery> query = make_ray_query(settings, scene);

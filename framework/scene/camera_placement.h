@@ -14,4 +14,13 @@ namespace pt {
 /// when the placed camera's position would not be finite in float (coordinates near 3e38).
 void centre_camera_on(const Bounds3& bounds, Camera* camera);
 
+/// The view the course's renderer gives when it renders `width` × `height` to a file: it looks at
+/// the centre of `bounds` along the file camera's direction from 1.5 × the length of the bounds'
+/// diagonal, and, having set its camera up for an 800 × 600 window, resizing to width × height
+/// keeps the size of that window's pixels, so the tangent of the half field of view scales by
+/// width/800 across (height/600 down; × 0.6 at the course's usual 480 × 360). Empty bounds
+/// keep the camera where it is; the orientation is always kept. Throws std::range_error when the
+/// placed camera's position would not be finite in float.
+void place_course_camera(const Bounds3& bounds, int width, int height, Camera* camera);
+
 }  // namespace pt

@@ -118,6 +118,10 @@ std::vector<SceneEntry> scene_entries() {
       {"cornell_spheres", "the box with two diffuse spheres", true},
       {"cornell_mirror_glass", "the box with a mirror sphere and a glass sphere (ior 1.5)", true},
       {"cornell_coil", "the box with a closed tube coiled along a helix (smooth normals)", true},
+      {"cornell_mirror_coil",
+       "the coil as a mirror, under a panel that disagrees with its light as the course's CBcoil's "
+       "does (panel 0.8 x 0.6 of radiance 10, light 0.6 x 0.8 of radiance 5)",
+       true},
       {"dense_mesh",
        "the box with a million triangles of very different sizes: a detailed bumpy statue, "
        "pebbles, a coil and two thin columns",
@@ -182,6 +186,24 @@ Document build_scene(const std::string& name, const SceneOptions& options) {
     g.faces = MeshGeometry::Faces::triangles;
     // The helix rises from z = 0 about the Z axis; lift it so its lowest point clears the floor.
     add_mesh(doc, std::move(g), "coil",
+             glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, float(options.coil.tube_radius) + 0.03f)));
+    return doc;
+  }
+  if (name == "cornell_mirror_coil") {
+    // The course's CBcoil carries an area light half as bright as its panel and turned the other
+    // way round; the coil's mirror shows the panel to the camera, so a renderer that lets a
+    // mirror see one emitter and light sampling another shows it at once.
+    doc.lights[0].radiance = glm::vec3(5.0f);
+    doc.nodes[0].transform = rows({0.6f, 0, 0, 0, 0, 0.8f, 0, 0, 0, 0, 1, 1.49f, 0, 0, 0, 1});
+    Material mirror = diffuse("chrome", glm::vec3(0.64f));
+    mirror.model = Material::Model::mirror;
+    mirror.reflectance = glm::vec3(0.95f);
+    doc.materials.push_back(mirror);
+    MeshGeometry g;
+    g.name = "coil";
+    g.mesh = make_coil(options.coil);
+    g.faces = MeshGeometry::Faces::triangles;
+    add_mesh(doc, std::move(g), "chrome",
              glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, float(options.coil.tube_radius) + 0.03f)));
     return doc;
   }
