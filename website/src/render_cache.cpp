@@ -66,6 +66,7 @@ std::vector<std::string> with_time_limit(const std::vector<std::string>& argv, i
   if (seconds <= 0) return argv;
   // The one child-process runner has no time limit of its own yet, so the limit is coreutils'
   // timeout around the child: it ends the child with SIGTERM, then SIGKILL ten seconds later.
+  // --foreground keeps the child in our process group, so that Ctrl-C stops it with us.
   static const bool have_timeout = [] {
     const char* path = std::getenv("PATH");
     std::istringstream dirs(path ? path : "");
@@ -75,7 +76,8 @@ std::vector<std::string> with_time_limit(const std::vector<std::string>& argv, i
     return false;
   }();
   if (!have_timeout) return argv;
-  std::vector<std::string> out = {"timeout", "--kill-after=10", std::to_string(seconds)};
+  std::vector<std::string> out = {"timeout", "--foreground", "--kill-after=10",
+                                  std::to_string(seconds)};
   out.insert(out.end(), argv.begin(), argv.end());
   return out;
 }
