@@ -222,7 +222,8 @@ image (the survivors' weight). Say what the maximum ray depth cuts off.*
 
 *Compare direct light alone with indirect light alone on the same scene, and say where each one
 comes from.* Indirect light here is the global render minus the direct one, pixel by pixel in
-linear values (noise can make a pixel negative; it is shown black).
+linear values. The two renders' noise does not cancel: a pixel can come out negative (it is shown
+black), and the light's edge, which their pixel samples cover differently, flickers.
 
 )";
     std::vector<Cell> split;
