@@ -117,3 +117,17 @@ TEST(WebsiteInit, BuildsAsItIsWithItsMeasuredPlot) {
   EXPECT_EQ(count(html.str(), "class=\"rate-key\""), 1);
   EXPECT_EQ(count(html.str(), "<table><thead>"), 1);  // the BVH timing table
 }
+
+TEST(WebsiteInit, WithoutTheCourseScenesEveryFigureUsesTheProjectsOwn) {
+  TestFolder dir;
+  pt::web::StarterOptions o;
+  o.dir = dir.path();
+  o.scene_dirs = {fs::path(PT_SOURCE_DIR) / "scenes"};
+  std::string md = pt::web::starter_markdown(o);
+  EXPECT_EQ(md.find("No scene for this figure"), std::string::npos) << md;
+  EXPECT_EQ(md.find("sky/"), std::string::npos);
+  EXPECT_NE(md.find("```compare "), std::string::npos);
+  EXPECT_NE(md.find("```timing "), std::string::npos);
+  EXPECT_NE(md.find("```plot scene=cornell_spheres.dae"), std::string::npos);
+  EXPECT_NE(md.find("extras=yes"), std::string::npos);
+}
