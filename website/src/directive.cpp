@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cctype>
 
-
 namespace pt::web {
 namespace {
 
@@ -80,26 +79,23 @@ std::vector<std::string> split_flags(const std::string& flags) {
   return out;
 }
 
-std::string merge_flags(const std::string& base, const std::string& extra) {
-  // Each option with the values after it; "-5" or "-0.5" is a value, "-s" an option.
-  using Group = std::vector<std::string>;
-  auto groups = [](const std::string& flags) {
-    std::vector<Group> out;
-    for (const std::string& word : split_flags(flags)) {
-      bool option = word.size() > 1 && word[0] == '-' &&
-                    !std::isdigit(static_cast<unsigned char>(word[1])) && word[1] != '.';
-      if (option || out.empty()) out.push_back({});
-      out.back().push_back(word);
-    }
-    return out;
-  };
-  std::vector<Group> merged = groups(base);
-  for (const Group& g : groups(extra)) {
-    auto same = [&](const Group& m) { return m.front() == g.front(); };
-    auto it = std::find_if(merged.begin(), merged.end(), same);
-    if (it != merged.end()) *it = g;
-    else merged.push_back(g);
+namespace {
+
+/// An option with the values after it; "-5" or "-0.5" is a value, "-s" an option.
+using Group = std::vector<std::string>;
+
+std::vector<Group> groups(const std::string& flags) {
+  std::vector<Group> out;
+  for (const std::string& word : split_flags(flags)) {
+    bool option = word.size() > 1 && word[0] == '-' &&
+                  !std::isdigit(static_cast<unsigned char>(word[1])) && word[1] != '.';
+    if (option || out.empty()) out.push_back({});
+    out.back().push_back(word);
   }
+  return out;
+}
+
+std::string join(const std::vector<Group>& merged) {
   std::string out;
   for (const Group& g : merged) {
     for (const std::string& w : g) {
@@ -108,6 +104,45 @@ std::string merge_flags(const std::string& base, const std::string& extra) {
     }
   }
   return out;
+}
+
+}  // namespace
+
+std::vector<std::string> flag_values(const std::string& flags, const std::vector<std::string>& names) {
+  std::vector<std::string> values;
+  for (const Group& g : groups(flags)) {
+    if (std::find(names.begin(), names.end(), g.front()) != names.end()) {
+      values.assign(g.begin() + 1, g.end());
+    }
+  }
+  return values;
+}
+
+std::string halve_resolution(const std::string& flags) {
+  std::vector<Group> all = groups(flags);
+  for (Group& g : all) {
+    if ((g.front() == "-r" || g.front() == "--resolution") && g.size() == 3) {
+      for (size_t i = 1; i < 3; ++i) {
+        try {
+          g[i] = std::to_string(std::max(1, std::stoi(g[i]) / 2));
+        } catch (const std::exception&) {
+          // not a number: leave it for the pathtracer to refuse with its own message
+        }
+      }
+    }
+  }
+  return join(all);
+}
+
+std::string merge_flags(const std::string& base, const std::string& extra) {
+  std::vector<Group> merged = groups(base);
+  for (const Group& g : groups(extra)) {
+    auto same = [&](const Group& m) { return m.front() == g.front(); };
+    auto it = std::find_if(merged.begin(), merged.end(), same);
+    if (it != merged.end()) *it = g;
+    else merged.push_back(g);
+  }
+  return join(merged);
 }
 
 }  // namespace pt::web

@@ -35,4 +35,11 @@ std::vector<std::string> split_flags(const std::string& flags);
 /// ("-r 64 48" over "-r 160 120") replaces the base's, since a command line may not repeat it.
 std::string merge_flags(const std::string& base, const std::string& extra);
 
+/// The values after the last of `names` in `flags` ("-s" or "--samples"), or none when absent.
+std::vector<std::string> flag_values(const std::string& flags, const std::vector<std::string>& names);
+
+/// The flags with every "-r W H" (or --resolution) halved, at least 1 each: a draft of the same
+/// picture at a quarter of the pixels, whose samples, depths and captions all stay true.
+std::string halve_resolution(const std::string& flags);
+
 }  // namespace pt::web

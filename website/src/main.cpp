@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "website/src/figure_html.h"
 #include "website/src/site_builder.h"
 #include "website/src/site_checks.h"
 #include "website/src/starter.h"
@@ -62,6 +63,14 @@ int main(int argc, char** argv) {
   b->add_option("--scenes", extra_scenes, "More folders to look for scenes in");
   b->add_option("--web-dir", build.web_dir, "The website/ folder (template, KaTeX)")
       ->capture_default_str();
+  b->add_option("--bench", build.bench,
+                "The bench executable that measures error against time for a plot with scene= "
+                "(default: beside the pathtracer)");
+  b->add_flag("--quick", build.quick,
+              "A draft: every render at half its width and height (about a quarter of the time)");
+  b->add_option("--time-limit", build.time_limit_seconds,
+                "Stop a render or a measurement that runs longer than this many seconds (0: none)")
+      ->capture_default_str()->check(CLI::NonNegativeNumber);
 
   pt::web::StarterOptions init;
   auto* i = app.add_subcommand("init", "Write a starting write-up with a section per part");
@@ -86,6 +95,8 @@ int main(int argc, char** argv) {
       if (build.out_dir.empty()) build.out_dir = src_dir / "site";
       if (build.cache_dir.empty()) build.cache_dir = src_dir / ".render-cache";
       build.pathtracer = fs::weakly_canonical(build.pathtracer);
+      if (build.bench.empty()) build.bench = build.pathtracer.parent_path() / "bench";
+      build.bench = fs::weakly_canonical(build.bench);
       build.scene_dirs = scene_dirs;
       build.log = &std::cerr;
       auto report = pt::web::build_site(build);
@@ -93,7 +104,8 @@ int main(int argc, char** argv) {
       if (rc == 0) {
         std::cerr << "website: wrote " << (build.out_dir / "index.html").string() << " ("
                   << report.renders_made << " renders made, " << report.renders_cached
-                  << " from the cache)\n";
+                  << " from the cache; " << pt::web::seconds_text(report.render_seconds)
+                  << " of rendering in all" << (build.quick ? ", draft sizes" : "") << ")\n";
       }
       return rc;
     }

@@ -4,9 +4,13 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "framework/process/child_process.h"
 
 namespace pt::web {
 
@@ -27,34 +31,66 @@ class RenderError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// What the pathtracer says about a finished render on its summary line
+/// ("render: 320x240, 300.3 spp on average, 57.65 s, ..."): the render alone, without loading
+/// the scene or building the BVH, which is what a comparison of traversal speed needs.
+struct RenderSummary {
+  int width = 0, height = 0;
+  double samples_per_pixel = 0;  ///< the mean, for an adaptive render
+  double seconds = 0;
+  std::string line;              ///< the line as printed
+};
+
+/// Reads the summary line out of the pathtracer's standard output, or nothing if it has none.
+std::optional<RenderSummary> parse_render_summary(const std::string& output);
+
 /// One finished render: its image and the other images the pathtracer wrote beside it (the
 /// sample-rate image of adaptive sampling), how long it took and how it was made.
 struct CachedRender {
-  std::filesystem::path image;
+  std::filesystem::path image;      ///< always a PNG
+  std::filesystem::path linear;     ///< the linear-float EXR, when one was asked for
   std::vector<std::filesystem::path> extras;
   double seconds = 0;      ///< wall-clock time of the pathtracer run that made it
+  std::optional<RenderSummary> summary;
   std::string command;     ///< the command line, as a reader would type it
   std::string key;         ///< the cache key
   bool from_cache = false;
 };
 
-/// How long one render of a write-up may take before it is stopped and reported: a hung renderer
-/// must fail `website build` with a message, not hang it. An hour, as for the graders'
-/// references: the write-up's largest renders take minutes.
-inline constexpr double kRenderTimeLimitSeconds = 3600.0;
-
 /// Runs the pathtracer once per distinct (scene, flags, binary) and remembers the result.
 class RenderCache {
  public:
-  RenderCache(std::filesystem::path pathtracer, std::filesystem::path cache_dir);
+  /// `time_limit_seconds` > 0 stops a render that runs longer (a hung renderer must not hang
+  /// the build); 0 waits for ever.
+  RenderCache(std::filesystem::path pathtracer, std::filesystem::path cache_dir,
+              int time_limit_seconds = 0);
 
-  /// The render of `scene` with `flags` (without -f, which the cache adds). Throws RenderError.
-  CachedRender render(const std::filesystem::path& scene, const std::string& flags);
+  /// The render of `scene` with `flags` (without -f, which the cache adds). With `linear`, the
+  /// pathtracer writes an EXR (for arithmetic on the values) and the PNG is encoded from it as
+  /// the pathtracer encodes its own; a later plain request with the same flags reuses it.
+  /// Throws RenderError.
+  CachedRender render(const std::filesystem::path& scene, const std::string& flags,
+                      bool linear = false);
 
  private:
+  std::string key(const std::filesystem::path& scene, const std::string& flags, bool linear);
+  bool load(const std::filesystem::path& entry, CachedRender& result) const;
+  /// The hash of a scene file's bytes, read once per build (a write-up renders the same large
+  /// mesh many times).
+  const std::string& scene_hash(const std::filesystem::path& scene);
+
   std::filesystem::path pathtracer_;
   std::filesystem::path cache_dir_;
+  int time_limit_seconds_ = 0;
   std::string binary_hash_;
+  std::map<std::filesystem::path, std::string> scene_hashes_;
 };
+
+/// The limit to give the child-process runner for a time limit of `seconds`: none for 0.
+double child_time_limit(int seconds);
+
+/// Why a child run with time limit `seconds` failed, in words, or "" when it was not stopped
+/// at that limit.
+std::string time_limit_message(const ChildResult& run, int seconds);
 
 }  // namespace pt::web

@@ -33,3 +33,16 @@ TEST(WebsiteDirective, CellFlagsReplaceSharedOnesOfTheSameName) {
   EXPECT_EQ(merge_flags("-d -1.5 -b 0.1", "-d -2"), "-d -2 -b 0.1");
   EXPECT_EQ(merge_flags("", "-H"), "-H");
 }
+
+TEST(WebsiteDirective, FlagValuesAreTheLastOfTheNamedOption) {
+  EXPECT_EQ(pt::web::flag_values("-s 4 -r 320 240 --samples 64", {"-s", "--samples"}),
+            (std::vector<std::string>{"64"}));
+  EXPECT_EQ(pt::web::flag_values("-r 320 240", {"-r"}), (std::vector<std::string>{"320", "240"}));
+  EXPECT_TRUE(pt::web::flag_values("-m 5", {"-s"}).empty());
+}
+
+TEST(WebsiteDirective, DraftsHalveTheResolutionAndNothingElse) {
+  EXPECT_EQ(pt::web::halve_resolution("-t 0 -r 320 240 -s 1024 -l 4"), "-t 0 -r 160 120 -s 1024 -l 4");
+  EXPECT_EQ(pt::web::halve_resolution("--resolution 1 3 -m 5"), "--resolution 1 1 -m 5");
+  EXPECT_EQ(pt::web::halve_resolution("-s 16 -a 32 0.1"), "-s 16 -a 32 0.1");
+}

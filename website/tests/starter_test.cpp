@@ -33,33 +33,66 @@ int count(const std::string& text, const std::string& what) {
 
 }  // namespace
 
-TEST(WebsiteInit, HasEveryPartAndTheRendersEachAsksFor) {
+TEST(WebsiteInit, HasEveryPartAndTheFiguresEachAsksFor) {
   TestFolder dir;
   std::string md = pt::web::starter_markdown(options(dir.path()));
   for (int part = 1; part <= 5; ++part) {
     EXPECT_NE(md.find("## Part " + std::to_string(part) + ":"), std::string::npos) << part;
   }
-  EXPECT_NE(md.find("scene=cornell_spheres.dae caption=\"spheres\""), std::string::npos);
-  EXPECT_NE(md.find("scene=cornell_coil.dae caption=\"coil\""), std::string::npos);
+  EXPECT_NE(md.find("scene=cornell_coil.dae"), std::string::npos);
+  EXPECT_NE(md.find("```timing "), std::string::npos);          // with and without the BVH
   EXPECT_NE(md.find("--bvh none"), std::string::npos);
+  EXPECT_NE(md.find("```compare "), std::string::npos);         // hemisphere against lights
   EXPECT_NE(md.find("flags=\"-H\""), std::string::npos);
+  EXPECT_NE(md.find("minus=\"-m 1\""), std::string::npos);      // indirect light alone
   for (const char* l : {"-l 1\"", "-l 4\"", "-l 16\"", "-l 64\""}) {
     EXPECT_NE(md.find(l), std::string::npos) << l;
   }
-  for (int m = 0; m <= 5; ++m) {
+  for (int m : {0, 1, 2, 3, 4, 5, 100}) {
     EXPECT_NE(md.find("flags=\"-m " + std::to_string(m) + "\""), std::string::npos) << m;
   }
-  for (int s : {1, 4, 16, 64, 256, 1024}) {
+  for (int k = 0; k <= 5; ++k) {
+    EXPECT_NE(md.find("--bounce " + std::to_string(k) + "\""), std::string::npos) << k;
+  }
+  for (int s : {1, 2, 4, 8, 16, 64, 1024}) {
     EXPECT_NE(md.find("flags=\"-s " + std::to_string(s) + "\""), std::string::npos) << s;
   }
-  EXPECT_NE(md.find("extras=yes"), std::string::npos);  // Part 5's sample-rate image
+  EXPECT_NE(md.find("extras=yes"), std::string::npos);          // Part 5's sample-rate image
+  EXPECT_NE(md.find("zoom="), std::string::npos);               // crops of the soft shadows
+  // The run-time-against-error plot is always there: measured when no table is given.
+  EXPECT_NE(md.find("```plot scene="), std::string::npos);
 }
 
-TEST(WebsiteInit, BuildsAsItIsWithAConvergencePlot) {
+TEST(WebsiteInit, EveryRenderAReaderComparesIsAtLeast320PixelsWide) {
   TestFolder dir;
-  auto table = dir.write("conv.csv", "strategy,samples,seconds,relMSE\na,1,0.1,0.5\na,4,0.4,0.1\n");
+  std::string md = pt::web::starter_markdown(options(dir.path()));
+  std::regex resolution("-r (\\d+) (\\d+)");
+  int renders = 0;
+  for (std::sregex_iterator it(md.begin(), md.end(), resolution), end; it != end; ++it) {
+    int width = std::stoi((*it)[1]);
+    // The renders without the BVH are timed, not looked at, and the study's are measured.
+    size_t line_start = md.rfind('\n', it->position()) + 1;
+    std::string line = md.substr(line_start, md.find('\n', it->position()) - line_start);
+    if (line.find("versus=") != std::string::npos && (*it)[0] == "-r 80 60") continue;
+    if (line.find("```plot") == 0) continue;
+    ++renders;
+    EXPECT_GE(width, 320) << line;
+  }
+  EXPECT_GE(renders, 8);
+}
+
+TEST(WebsiteInit, UsesTheStudentsConvergenceTableWhenGivenOne) {
+  TestFolder dir;
+  auto o = options(dir.path());
+  o.convergence_table = dir.write("mine.csv", "strategy,samples,seconds,relMSE\na,1,0.1,0.5\n");
+  std::string md = pt::web::starter_markdown(o);
+  EXPECT_NE(md.find("```plot csv=mine.csv"), std::string::npos);
+  EXPECT_EQ(md.find("```plot scene="), std::string::npos);
+}
+
+TEST(WebsiteInit, BuildsAsItIsWithItsMeasuredPlot) {
+  TestFolder dir;
   auto o = options(dir.path() / "writeup");
-  o.convergence_table = table;
   fs::path md = pt::web::write_starter(o);
   EXPECT_THROW(pt::web::write_starter(o), std::runtime_error) << "must not overwrite";
   pt::web::BuildOptions b;
@@ -67,6 +100,7 @@ TEST(WebsiteInit, BuildsAsItIsWithAConvergencePlot) {
   b.out_dir = dir.path() / "site";
   b.web_dir = PT_WEBSITE_DIR;
   b.pathtracer = PT_FAKE_PATHTRACER;
+  b.bench = PT_FAKE_PATHTRACER;
   b.cache_dir = dir.path() / "cache";
   b.scene_dirs = o.scene_dirs;
   auto report = pt::web::build_site(b);
@@ -74,6 +108,25 @@ TEST(WebsiteInit, BuildsAsItIsWithAConvergencePlot) {
   for (const auto& p : report.problems) all += p.to_string() + "\n";
   ASSERT_TRUE(report.problems.empty()) << all;
   const std::string html = pt::read_text_file(b.out_dir / "index.html");
-  EXPECT_GE(count(html, "<img src=\"renders/"), 3 + 4 + 2 + 4 + 2 + 6 + 6 + 1);
+  // Part 1: 4, Part 2: 2 or 3, Part 3: 2 + 2 crops, 2 + 2, 4 + 4; Part 4: 9, 7, 6, 7 + 7;
+  // Part 5: 2.
+  EXPECT_GE(count(html, "<img src=\"renders/"), 4 + 2 + 4 + 4 + 8 + 9 + 7 + 6 + 14 + 2);
   EXPECT_EQ(count(html, "<img src=\"plots/"), 1);
+  EXPECT_EQ(count(html, "class=\"slider\""), 1);
+  EXPECT_EQ(count(html, "class=\"rate-key\""), 1);
+  EXPECT_EQ(count(html, "<table><thead>"), 1);  // the BVH timing table
+}
+
+TEST(WebsiteInit, WithoutTheCourseScenesEveryFigureUsesTheProjectsOwn) {
+  TestFolder dir;
+  pt::web::StarterOptions o;
+  o.dir = dir.path();
+  o.scene_dirs = {fs::path(PT_SOURCE_DIR) / "scenes"};
+  std::string md = pt::web::starter_markdown(o);
+  EXPECT_EQ(md.find("No scene for this figure"), std::string::npos) << md;
+  EXPECT_EQ(md.find("sky/"), std::string::npos);
+  EXPECT_NE(md.find("```compare "), std::string::npos);
+  EXPECT_NE(md.find("```timing "), std::string::npos);
+  EXPECT_NE(md.find("```plot scene=cornell_spheres.dae"), std::string::npos);
+  EXPECT_NE(md.find("extras=yes"), std::string::npos);
 }
