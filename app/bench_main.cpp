@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <string>
 #include <thread>
@@ -23,6 +24,7 @@
 #include "app/accel/wide_bvh.h"
 #endif
 #include "app/convergence.h"
+#include "app/speed_report.h"
 #include "app/strategy_agreement.h"
 #include "framework/math/float_error.h"
 #include "framework/math/frame.h"
@@ -133,10 +135,12 @@ class EmbreeTracer final : public Tracer {
 #endif
 
 /// Traces the set with `threads` threads until at least `min_seconds` have passed; returns
-/// millions of rays per second, and the answers of the first pass in *answers.
+/// millions of rays per second, and the answers of the first pass in *answers (when not null).
 double measure(const Tracer& tracer, const RaySet& set, int threads, double min_seconds,
                std::vector<float>* answers) {
-  answers->assign(set.rays.size(), 0.0f);
+  std::vector<float> scratch(set.rays.size(), 0.0f);
+  std::vector<float>& out = answers ? *answers : scratch;
+  out.assign(set.rays.size(), 0.0f);
   tbb::task_arena arena(threads);
   size_t traced = 0;
   const auto start = Clock::now();
@@ -146,13 +150,80 @@ double measure(const Tracer& tracer, const RaySet& set, int threads, double min_
       tbb::parallel_for(tbb::blocked_range<size_t>(0, set.rays.size(), 1024),
                         [&](const tbb::blocked_range<size_t>& r) {
                           for (size_t i = r.begin(); i < r.end(); ++i)
-                            (*answers)[i] = tracer.trace(set.rays[i], set.occlusion);
+                            out[i] = tracer.trace(set.rays[i], set.occlusion);
                         });
     });
     traced += set.rays.size();
     seconds = std::chrono::duration<double>(Clock::now() - start).count();
   } while (seconds < min_seconds && !set.rays.empty());
   return seconds > 0.0 ? double(traced) / seconds * 1e-6 : 0.0;
+}
+
+/// A tracer timed by bench under a JSON key, on every set or on the nearest-hit sets only.
+struct TimedTracer {
+  std::string key;
+  const Tracer* tracer = nullptr;
+  bool occlusion_sets = true;
+  /// Per set and thread count, Mrays/s of each round; and per set the first answers.
+  std::map<std::string, std::map<int, std::vector<double>>> rounds;
+  std::vector<std::vector<float>> answers;
+};
+
+/// Times every tracer on every set at every thread count, round by round: in each round each
+/// tracer traces the set (for at least min_seconds) once, the tracers taking turns in an order that
+/// rotates from round to round, so a change in the machine's load falls on all of them alike and
+/// a ratio of two tracers is taken between runs made seconds apart.
+void time_interleaved(std::vector<TimedTracer>* tracers, const std::vector<RaySet>& sets,
+                      const std::vector<int>& threads, int rounds, double min_seconds) {
+  for (TimedTracer& t : *tracers) t.answers.assign(sets.size(), {});
+  for (size_t s = 0; s < sets.size(); ++s)
+    for (int th : threads)
+      for (int r = 0; r < rounds; ++r)
+        for (size_t k = 0; k < tracers->size(); ++k) {
+          TimedTracer& t = (*tracers)[(k + size_t(r)) % tracers->size()];
+          if (sets[s].occlusion && !t.occlusion_sets) continue;
+          std::vector<float>* answers = t.answers[s].empty() ? &t.answers[s] : nullptr;
+          t.rounds[sets[s].name][th].push_back(measure(*t.tracer, sets[s], th, min_seconds, answers));
+        }
+}
+
+double median_of(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/// Per set and thread count, the median of the rounds' Mrays/s.
+json median_mrays(const TimedTracer& t) {
+  json out = json::object();
+  for (const auto& [set, per_thread] : t.rounds)
+    for (const auto& [th, rounds] : per_thread) out[set][std::to_string(th)] = median_of(rounds);
+  return out;
+}
+
+/// Per set and thread count that both timed, a's Mrays/s over b's round by round: the median
+/// and the range of those ratios, and how many rounds they come from.
+json round_ratios(const TimedTracer& a, const TimedTracer& b) {
+  json out = json::object();
+  for (const auto& [set, per_thread] : a.rounds) {
+    const auto other = b.rounds.find(set);
+    if (other == b.rounds.end()) continue;
+    for (const auto& [th, ra] : per_thread) {
+      const auto rb = other->second.find(th);
+      if (rb == other->second.end()) continue;
+      std::vector<double> ratios;
+      for (size_t r = 0; r < std::min(ra.size(), rb->second.size()); ++r)
+        if (rb->second[r] > 0.0) ratios.push_back(ra[r] / rb->second[r]);
+      if (ratios.empty()) continue;
+      out[set][std::to_string(th)] = {
+          {"median", median_of(ratios)},
+          {"min", *std::min_element(ratios.begin(), ratios.end())},
+          {"max", *std::max_element(ratios.begin(), ratios.end())},
+          {"rounds", ratios.size()}};
+    }
+  }
+  return out;
 }
 
 /// Whether two answers to one ray agree: both misses, both the same occlusion, or distances
@@ -215,32 +286,6 @@ std::vector<RaySet> make_sets(const Scene& scene, const Bvh& bvh, int width, int
   return sets;
 }
 
-/// Times `tracer` on every set at every thread count; adds the figures to *out.
-void time_sets(const Tracer& tracer, const std::vector<RaySet>& sets,
-               const std::vector<int>& threads, double min_seconds, json* out,
-               std::vector<std::vector<float>>* first_answers) {
-  first_answers->assign(sets.size(), {});
-  for (size_t s = 0; s < sets.size(); ++s) {
-    json per_thread;
-    for (int t : threads) {
-      std::vector<float> answers;
-      per_thread[std::to_string(t)] = measure(tracer, sets[s], t, min_seconds, &answers);
-      if ((*first_answers)[s].empty()) (*first_answers)[s] = std::move(answers);
-    }
-    (*out)[sets[s].name] = per_thread;
-  }
-}
-
-json ratio(const json& a, const json& b) {
-  json r;
-  for (auto set = a.begin(); set != a.end(); ++set)
-    for (auto t = set.value().begin(); t != set.value().end(); ++t) {
-      const double d = b[set.key()][t.key()].get<double>();
-      r[set.key()][t.key()] = d > 0.0 ? t.value().get<double>() / d : 0.0;
-    }
-  return r;
-}
-
 /// Per set, Mrays/s on the most threads timed over Mrays/s on one thread (when both were timed).
 json speedup_over_one_thread(const json& mrays) {
   json r = json::object();
@@ -273,14 +318,18 @@ int run(int argc, char** argv) {
   // bench --agreement SCENE... renders each strategy at full resolution and compares them.
   for (int i = 1; i < argc; ++i)
     if (std::string(argv[i]).rfind("--agreement", 0) == 0) return agreement_main(argc, argv);
+  // bench --render is the speed report: the pathtracer command itself, timed on course scenes.
+  for (int i = 1; i < argc; ++i)
+    if (std::string(argv[i]) == "--render") return speed_report_main(argc, argv);
   CLI::App app{"bench: BVH build time and rays per second (primary, diffuse, shadow) as JSON"};
   app.footer("Studies with options of their own: bench --convergence SCENE --help (error against "
              "time per strategy), bench --agreement SCENE... --help (do the strategies render one "
-             "image?)");
+             "image?), bench --render --help (the speed report: the pathtracer command, timed)");
   std::string scene_path, rays_prefix, write_prefix, split = "sah";
   int leaf = 4, width = 640, height = 480;
   bool embree = false, wide = false;
-  double min_seconds = 1.0;
+  double min_seconds = 0.2;
+  int rounds = 5;
   uint64_t seed = 1;
   std::vector<int> threads;
   app.add_option("scene", scene_path, "COLLADA scene (.dae)")->required();
@@ -294,8 +343,13 @@ int run(int argc, char** argv) {
   app.add_option("-r,--resolution", width, "width of the primary set made from the scene")
       ->check(CLI::Range(1, 1 << 14));
   app.add_option("--threads", threads, "thread counts to time (default: 1 and every core)");
-  app.add_option("--min-seconds", min_seconds, "time each measurement for at least this long")
+  app.add_option("--min-seconds", min_seconds,
+                 "time each tracer for at least this long in each round (default 0.2)")
       ->check(CLI::Range(0.0, 600.0));
+  app.add_option("--rounds", rounds,
+                 "rounds of timing: in each, every tracer traces each set in turn (the order "
+                 "rotating), and ratios are taken round by round; medians and ranges are printed")
+      ->check(CLI::Range(1, 1000));
   app.add_option("--seed", seed, "seed of the diffuse and shadow sets made from the scene");
   app.add_flag("--wide", wide,
                "also time the app's wide BVH (8 children a node) collapsed from the first "
@@ -361,77 +415,116 @@ int run(int argc, char** argv) {
   }
   for (const RaySet& s : sets) out["ray_counts"][s.name] = s.rays.size();
 
-  std::vector<json> mrays(bvhs.size());
-  std::vector<std::vector<float>> ours;
+  // Every tracer is made first and then timed round by round (time_interleaved), so the ratios
+  // between them hold on a machine whose load changes while bench runs.
+  std::vector<std::unique_ptr<Tracer>> owned;
+  std::vector<TimedTracer> timed;
+  auto add = [&](const std::string& key, std::unique_ptr<Tracer> tracer, bool occlusion_sets) {
+    TimedTracer t;
+    t.key = key;
+    t.tracer = tracer.get();
+    t.occlusion_sets = occlusion_sets;
+    owned.push_back(std::move(tracer));
+    timed.push_back(std::move(t));
+  };
+  auto find = [&](const std::string& key) -> const TimedTracer* {
+    for (const TimedTracer& t : timed)
+      if (t.key == key) return &t;
+    return nullptr;
+  };
+  std::vector<std::string> binary_keys;
   for (size_t k = 0; k < bvhs.size(); ++k) {
+    binary_keys.push_back(methods[k] == BvhSplitMethod::sah ? "sah" : "median");
+    add(binary_keys.back(), std::make_unique<BvhTracer>(*bvhs[k]), true);
+  }
+
+#ifndef PT_HAVE_WIDE_BVH
+  if (wide) throw std::runtime_error("--wide: the wide BVH is not in this build (the handout)");
+#else
+  std::unique_ptr<WideBvh> wide_bvh;
+  /// The wide tree's nearest query: what rtcIntersect1 reports, no SurfaceHit made.
+  class NearestTracer final : public Tracer {
+   public:
+    explicit NearestTracer(const WideBvh& bvh) : bvh_(bvh) {}
+    float trace(const Ray& ray, bool occlusion) const override {
+      if (occlusion) return bvh_.occluded(ray) ? 1.0f : 0.0f;
+      NearestHit hit;
+      return bvh_.nearest(ray, &hit) ? hit.t : std::numeric_limits<float>::infinity();
+    }
+
+   private:
+    const WideBvh& bvh_;
+  };
+  if (wide) {
+    wide_bvh = std::make_unique<WideBvh>(scene, *bvhs.front());
+    add("wide", std::make_unique<NearestTracer>(*wide_bvh), true);
+    // The full intersect, which the renderer calls, on the sets it differs on.
+    add("wide_full", std::make_unique<BvhTracer>(*wide_bvh), false);
+  }
+#endif
+
+#ifdef PT_HAVE_EMBREE
+  std::unique_ptr<EmbreeTracer> embree_tracer;
+  if (embree) {
+    embree_tracer = std::make_unique<EmbreeTracer>(scene);
+    TimedTracer t;
+    t.key = "embree";
+    t.tracer = embree_tracer.get();
+    timed.push_back(std::move(t));
+  }
+#endif
+
+  time_interleaved(&timed, sets, threads, rounds, min_seconds);
+  out["timing"] = {{"rounds", rounds},
+                   {"min_seconds_per_tracer_and_round", min_seconds},
+                   {"method", "every tracer traces each set once a round, in an order rotating from "
+                              "round to round; Mrays/s are the rounds' median, ratios the median "
+                              "(and range) of the rounds' ratios"}};
+
+  const std::vector<std::vector<float>>& ours = find(binary_keys.front())->answers;
+  for (size_t k = 0; k < bvhs.size(); ++k) {
+    const TimedTracer& t = *find(binary_keys[k]);
     json entry = bvh_stats_json(bvhs[k]->stats(), leaf);
     entry["query"] = kFullQuery;
-    std::vector<std::vector<float>> answers;
-    time_sets(BvhTracer(*bvhs[k]), sets, threads, min_seconds, &mrays[k], &answers);
-    entry["mrays_per_s"] = mrays[k];
-    entry["speedup"] = speedup_over_one_thread(mrays[k]);
+    entry["mrays_per_s"] = median_mrays(t);
+    entry["speedup"] = speedup_over_one_thread(entry["mrays_per_s"]);
     json agreement;
     for (size_t s = 0; s < sets.size(); ++s)
       if (!sets[s].answers.empty())
         agreement[sets[s].name] = {
             {"rays", sets[s].rays.size()},
-            {"agree", count_agreeing(answers[s], sets[s].answers, sets[s].occlusion)}};
+            {"agree", count_agreeing(t.answers[s], sets[s].answers, sets[s].occlusion)}};
     if (!agreement.is_null()) entry["agreement_with_answer_files"] = agreement;
-    out[k == 0 && methods[0] == BvhSplitMethod::sah ? "sah" : "median"] = entry;
-    if (k == 0) ours = std::move(answers);
+    out[binary_keys[k]] = entry;
   }
-  if (bvhs.size() == 2) out["sah_over_median"] = ratio(mrays[0], mrays[1]);
+  if (bvhs.size() == 2) out["sah_over_median"] = round_ratios(*find("sah"), *find("median"));
 
-  json wide_mrays, wide_full_mrays;
-#ifndef PT_HAVE_WIDE_BVH
-  if (wide) throw std::runtime_error("--wide: the wide BVH is not in this build (the handout)");
-#else
+#ifdef PT_HAVE_WIDE_BVH
   if (wide) {
-    const WideBvh wide_bvh(scene, *bvhs.front());
-    const WideBvhStats& ws = wide_bvh.stats();
-    json entry = {{"from", methods[0] == BvhSplitMethod::sah ? "sah" : "median"},
+    const TimedTracer& near = *find("wide");
+    const TimedTracer& full = *find("wide_full");
+    const WideBvhStats& ws = wide_bvh->stats();
+    json entry = {{"from", binary_keys.front()},
                   {"collapse_ms", ws.build_ms},
                   {"nodes", ws.nodes},
                   {"leaves", ws.leaves},
                   {"depth", ws.depth},
                   {"mean_children", ws.mean_children}};
-    /// The wide tree's nearest query: what rtcIntersect1 reports, no SurfaceHit made.
-    class NearestTracer final : public Tracer {
-     public:
-      explicit NearestTracer(const WideBvh& bvh) : bvh_(bvh) {}
-      float trace(const Ray& ray, bool occlusion) const override {
-        if (occlusion) return bvh_.occluded(ray) ? 1.0f : 0.0f;
-        NearestHit hit;
-        return bvh_.nearest(ray, &hit) ? hit.t : std::numeric_limits<float>::infinity();
-      }
-
-     private:
-      const WideBvh& bvh_;
-    };
-    std::vector<std::vector<float>> answers, full_answers;
-    time_sets(NearestTracer(wide_bvh), sets, threads, min_seconds, &wide_mrays, &answers);
     entry["query"] = kNearestQuery;
-    entry["mrays_per_s"] = wide_mrays;
-    // The full intersect, which the renderer calls, on the sets it differs on.
-    std::vector<RaySet> nearest_sets;
-    for (const RaySet& s : sets)
-      if (!s.occlusion) nearest_sets.push_back(s);
-    time_sets(BvhTracer(wide_bvh), nearest_sets, threads, min_seconds, &wide_full_mrays,
-              &full_answers);
+    entry["mrays_per_s"] = median_mrays(near);
     entry["full_intersect"] = {{"query", kFullQuery},
-                               {"mrays_per_s", wide_full_mrays},
-                               {"over_binary", ratio(wide_full_mrays, mrays[0])}};
-    entry["over_binary"] = ratio(wide_mrays, mrays[0]);
+                               {"mrays_per_s", median_mrays(full)},
+                               {"over_binary", round_ratios(full, *find(binary_keys.front()))}};
+    entry["over_binary"] = round_ratios(near, *find(binary_keys.front()));
     // The wide tree answers exactly as the binary one: every t equal, not merely close.
     json same;
-    for (size_t s = 0, f = 0; s < sets.size(); ++s) {
+    for (size_t s = 0; s < sets.size(); ++s) {
       size_t n = 0, n_full = 0;
-      for (size_t i = 0; i < answers[s].size(); ++i) n += answers[s][i] == ours[s][i];
+      for (size_t i = 0; i < near.answers[s].size(); ++i) n += near.answers[s][i] == ours[s][i];
       same[sets[s].name] = {{"rays", sets[s].rays.size()}, {"identical_to_binary", n}};
       if (sets[s].occlusion) continue;
-      for (size_t i = 0; i < full_answers[f].size(); ++i) n_full += full_answers[f][i] == ours[s][i];
+      for (size_t i = 0; i < full.answers[s].size(); ++i) n_full += full.answers[s][i] == ours[s][i];
       same[sets[s].name]["full_intersect_identical_to_binary"] = n_full;
-      ++f;
     }
     entry["agreement_with_binary"] = same;
     entry["width"] = WideNode::kWidth;
@@ -441,24 +534,22 @@ int run(int argc, char** argv) {
 
   if (embree) {
 #ifdef PT_HAVE_EMBREE
-    const EmbreeTracer tracer(scene);
-    json e, em;
-    std::vector<std::vector<float>> answers;
-    time_sets(tracer, sets, threads, min_seconds, &em, &answers);
+    const TimedTracer& em = *find("embree");
+    json e;
     e["version"] = RTC_VERSION_STRING;
     e["calls"] = "rtcIntersect1 / rtcOccluded1";
     e["query"] = kNearestQuery;
-    e["build_ms"] = tracer.build_ms();
-    e["mrays_per_s"] = em;
-    e["ours_over_embree"] = ratio(mrays[0], em);
+    e["build_ms"] = embree_tracer->build_ms();
+    e["mrays_per_s"] = median_mrays(em);
+    e["ours_over_embree"] = round_ratios(*find(binary_keys.front()), em);
     if (wide) {
-      e["wide_over_embree"] = ratio(wide_mrays, em);
-      e["wide_full_intersect_over_embree"] = ratio(wide_full_mrays, em);
+      e["wide_over_embree"] = round_ratios(*find("wide"), em);
+      e["wide_full_intersect_over_embree"] = round_ratios(*find("wide_full"), em);
     }
     json agreement;
     for (size_t s = 0; s < sets.size(); ++s)
       agreement[sets[s].name] = {{"rays", sets[s].rays.size()},
-                                 {"agree", count_agreeing(ours[s], answers[s], sets[s].occlusion)}};
+                                 {"agree", count_agreeing(ours[s], em.answers[s], sets[s].occlusion)}};
     e["agreement_with_ours"] = agreement;
     out["embree"] = e;
 #else

@@ -69,12 +69,13 @@ class CliTest : public ::testing::Test {
   std::string scene() const { return (dir_ / "quad.dae").string(); }
   std::string file(const std::string& name) const { return (dir_ / name).string(); }
 
-  /// Runs the pathtracer with `args` (shell words) in the temporary folder.
-  Outcome pathtracer(const std::string& args) const {
+  /// Runs the pathtracer with `args` (shell words) in the temporary folder, with the
+  /// environment's assignments `env` (shell words, "NAME=value ...") added.
+  Outcome pathtracer(const std::string& args, const std::string& env = "") const {
     const std::string binary = PT_PATHTRACER;
     const std::string err_file = file("stderr.txt");
-    std::string command = "cd " + quote(dir_.string()) + " && " + quote(binary) + " " + args +
-                          " 2>" + quote(err_file);
+    std::string command = "cd " + quote(dir_.string()) + " && " + env + " " + quote(binary) + " " +
+                          args + " 2>" + quote(err_file);
     Outcome run;
     FILE* pipe = popen(command.c_str(), "r");
     if (!pipe) {
@@ -214,4 +215,33 @@ TEST_F(CliTest, InfoDescribesTheSceneWithoutRendering) {
   EXPECT_NE(run.out.find("triangles"), std::string::npos) << run.out;
   EXPECT_EQ(run.out.find("render:"), std::string::npos) << run.out;
   EXPECT_FALSE(fs::exists(file("quad.png")));
+}
+
+// The image library (OpenImageIO and its 260-odd shared objects) is opened only to read or write
+// an image: the dynamic loader's own log (LD_DEBUG=files, on stderr) says what a command brought in.
+TEST_F(CliTest, CommandsThatWriteNoImageNeverLoadTheImageLibrary) {
+  for (const std::string& args : {std::string("--help"), "--info " + quote(scene())}) {
+    Outcome run = pathtracer(args, "LD_DEBUG=files");
+    ASSERT_EQ(run.exit_code, 0) << args << ": " << run.err;
+    ASSERT_NE(run.err.find("generating link map"), std::string::npos)
+        << "the loader's log is empty: " << run.err;
+    EXPECT_EQ(run.err.find("OpenImageIO"), std::string::npos) << args << " loaded it:\n" << run.err;
+    EXPECT_EQ(run.err.find("pt_image_oiio"), std::string::npos) << args << " loaded it";
+  }
+  // A render loads it to write its image.
+  Outcome render = pathtracer("--normals -r 8 6 -s 1 -f out.png " + quote(scene()), "LD_DEBUG=files");
+  ASSERT_EQ(render.exit_code, 0) << render.err;
+  EXPECT_NE(render.err.find("pt_image_oiio"), std::string::npos) << render.err;
+  EXPECT_TRUE(fs::exists(file("out.png")));
+}
+
+TEST_F(CliTest, AMissingImageModuleIsNamedWithThePlacesLookedIn) {
+  Outcome run = pathtracer("--normals -r 8 6 -s 1 -f lost.png " + quote(scene()),
+                           "PT_IMAGE_MODULE_DIR=" + quote(file("nowhere")));
+  EXPECT_FALSE(run.crashed);
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_NE(run.err.find("lost.png"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("pt_image_oiio.so"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("nowhere"), std::string::npos) << run.err;
+  EXPECT_FALSE(fs::exists(file("lost.png")));
 }

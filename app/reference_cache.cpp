@@ -8,8 +8,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include <OpenImageIO/hash.h>
 #include <nlohmann/json.hpp>
+#include <xxhash.h>
 
 #include "framework/image/estimate_exr.h"
 #include "framework/stats/image_error.h"
@@ -19,14 +19,15 @@ namespace {
 
 using nlohmann::json;
 
-/// Bumped when what a key stands for changes, so old caches are not mistaken for new ones.
-constexpr int kKeyVersion = 1;
+/// Bumped when what a key stands for changes, so old caches are not mistaken for new ones
+/// (2: the fingerprint became XXH3, so the image library is not loaded to make a key).
+constexpr int kKeyVersion = 2;
 
 uint64_t file_fingerprint(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(path + ": cannot read the file to fingerprint it");
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return OIIO::farmhash::Fingerprint64(bytes.data(), bytes.size());
+  return XXH3_64bits(bytes.data(), bytes.size());
 }
 
 std::string hex(uint64_t v) {
@@ -91,7 +92,7 @@ std::string reference_key(const std::string& scene_path, const RenderSettings& s
   if (!settings.environment_map.empty())
     what["environment_map"] = hex(file_fingerprint(settings.environment_map));
   const std::string text = what.dump();
-  return hex(OIIO::farmhash::Fingerprint64(text.data(), text.size()));
+  return hex(XXH3_64bits(text.data(), text.size()));
 }
 
 Reference load_or_make_reference(const std::string& scene_path, const RenderSettings& settings,

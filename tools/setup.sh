@@ -14,6 +14,7 @@ packages=(
   libpugixml-dev        # COLLADA reader
   libcli11-dev          # command lines
   nlohmann-json3-dev    # bench output, manifests, grader results
+  libxxhash-dev         # fingerprints of the convergence study's cached references
   libcmark-dev          # write-up Markdown
   libembree-dev         # optional: bench --embree comparison only
   clang libclang-rt-dev llvm  # optional: tools/fuzz (libFuzzer, its sanitizers, llvm-cov)

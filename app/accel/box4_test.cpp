@@ -2,6 +2,7 @@
 // and bit-identical entry distances, on random, flat and plane-touching boxes.
 // SOLUTION-ONLY FILE: not in the student handout, since it holds complete Part 1 and Part 2 answers.
 #include <cmath>
+#include <cstdio>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -109,6 +110,47 @@ TEST(AccelBox4, EmptySlotIsNeverMet) {
     alignas(16) float t4[4];
     ASSERT_EQ(intersect_box4(box4, Box4Ray(ray), std::numeric_limits<float>::infinity(), t4), 0u);
   }
+}
+
+// The node test of two Box4 at once (eight AVX lanes where the build has them) is the four-box
+// test on each, bit for bit: the same lanes met, the same entry distances.
+TEST(FrameworkAccelBox4, EightLanesAnswerAsTwoFourLaneTests) {
+  Rng rng(19);
+  size_t hits = 0, lanes = 0;
+  for (int i = 0; i < 200000; ++i) {
+    Ray ray;
+    ray.o = random_in_cube(rng, 5.0f);
+    ray.d = square_to_uniform_sphere(rng.next_2d());
+    const uint32_t kind = rng.next_u32() % 5;
+    if (kind == 0) ray.d[rng.next_u32() % 3] = 0.0f;
+    if (kind == 1) ray.d[rng.next_u32() % 3] = -0.0f;
+    if (kind == 2) ray.tmin = rng.next_float() * 3.0f;
+    const float tmax = kind == 3 ? rng.next_float() * 4.0f : std::numeric_limits<float>::infinity();
+    alignas(16) Box4 boxes[2];
+    for (int k = 0; k < 8; ++k) {
+      const Bounds3 b = (k == 5 && kind == 4) ? Bounds3{} : random_box(rng, ray.o);  // an empty slot
+      for (int a = 0; a < 3; ++a) {
+        boxes[k / 4].bounds[a][k % 4] = b.lo[a];
+        boxes[k / 4].bounds[3 + a][k % 4] = b.hi[a];
+      }
+    }
+    const Box4Ray box_ray(ray);
+    alignas(32) float t8[8];
+    alignas(16) float t4[8];
+    const unsigned mask8 = intersect_box8(boxes, box_ray, tmax, t8);
+    const unsigned mask4 = intersect_box4(boxes[0], box_ray, tmax, t4) |
+                           intersect_box4(boxes[1], box_ray, tmax, t4 + 4) << 4;
+    ASSERT_EQ(mask8, mask4) << "ray " << i;
+    for (int k = 0; k < 8; ++k) {
+      ++lanes;
+      if (!(mask4 >> k & 1u)) continue;
+      ++hits;
+      ASSERT_EQ(float_to_bits(t8[k]), float_to_bits(t4[k])) << "ray " << i << " lane " << k;
+    }
+  }
+  EXPECT_GT(hits, lanes / 20) << "too few hits to be a test";
+  std::printf("intersect_box8: %s, %zu of %zu lanes met\n", PT_ACCEL_AVX ? "AVX" : "two SSE tests",
+              hits, lanes);
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 // The wide BVH's triangle test (shear once per ray) against Part 1's intersect_triangle: the same
 // answer and bit-identical t and barycentrics on millions of random and adversarial rays; and its
 // four-triangle SIMD filter never turns away a triangle that test accepts; and the four-triangle
-// SIMD test, where it answers rather than hand a lane back, answers bit for bit as that test.
+// SIMD test, where it answers rather than hand a lane back, answers bit for bit as that test, as
+// does the eight-triangle one (AVX) lane for lane.
 // SOLUTION-ONLY FILE: not in the student handout, since it holds complete Part 1 and Part 2 answers.
 #include <cmath>
 #include <cstdint>
@@ -31,6 +32,8 @@ struct Tally {
   size_t filtered = 0, filter_lost = 0;  ///< lanes the four-triangle filter rejected; wrongly
   /// Hits the four-triangle test answered itself, handed to the scalar test, got wrong.
   size_t simd_hits = 0, simd_retests = 0, simd_differ = 0;
+  /// Hits of the eight-lane test, and lanes where it did not answer as the four-lane test.
+  size_t eight_hits = 0, eight_differ = 0;
   std::string first;
 };
 
@@ -81,6 +84,35 @@ void compare(const Ray& ray, const glm::vec3& p0, const glm::vec3& p1, const glm
   }
   if (!simd_same && tally->simd_differ++ == 0)
     tally->first += " [four-lane test differs: t=" + std::to_string(got.t) + "]";
+  // The eight-lane test (two packets, AVX where the build has it) answers every lane as the
+  // four-lane test does: the same triangle in lane `lane8` of two packets, the rest empty.
+  Triangle4 pair[2];
+  const int lane8 = int(tally->cases % 8);
+  for (int v = 0; v < 3; ++v)
+    for (int a = 0; a < 3; ++a)
+      for (int k = 0; k < 8; ++k)
+        pair[k / 4].corner[v][a][k % 4] = k == lane8 ? (*corners[v])[a] : std::nanf("");
+  Triangle4 single;
+  for (int v = 0; v < 3; ++v)
+    for (int a = 0; a < 3; ++a)
+      for (int k = 0; k < 4; ++k) single.corner[v][a][k] = pair[lane8 / 4].corner[v][a][k];
+  Triangle8Hits h8;
+  triangle8_intersect(pair[0], pair[1], ray4, ray.tmax, 0xFFu, &h8);
+  Triangle4Hits h1;
+  triangle4_intersect(single, ray4, ray.tmax, 0xFu, &h1);
+  const unsigned shift = unsigned(lane8 / 4) * 4u, l1 = unsigned(lane8 % 4);
+  bool same8 = (h8.hit >> shift & 0xFu) == h1.hit && (h8.retest >> shift & 0xFu) == h1.retest;
+  if (same8 && (h1.hit >> l1 & 1u))
+    same8 = float_to_bits(h8.t[lane8]) == float_to_bits(h1.t[l1]) &&
+            float_to_bits(h8.b0[lane8]) == float_to_bits(h1.b0[l1]) &&
+            float_to_bits(h8.b1[lane8]) == float_to_bits(h1.b1[l1]) &&
+            float_to_bits(h8.b2[lane8]) == float_to_bits(h1.b2[l1]) &&
+            float_to_bits(h8.t_error[lane8]) == float_to_bits(h1.t_error[l1]) &&
+            h8.still_hits(uint32_t(lane8), 0.5f * (ray.tmin + h1.t[l1])) ==
+                h1.still_hits(l1, 0.5f * (ray.tmin + h1.t[l1]));
+  tally->eight_hits += (h8.hit >> lane8) & 1u;
+  if (!same8 && tally->eight_differ++ == 0)
+    tally->first += " [eight-lane test differs from four-lane: t=" + std::to_string(got.t) + "]";
   if (hg && !candidate && tally->filter_lost++ == 0)
     tally->first += " [filter rejected a hit at t=" + std::to_string(got.t) + "]";
   const bool same = hw == hg && (!hw || (float_to_bits(want.t) == float_to_bits(got.t) &&
@@ -144,15 +176,19 @@ TEST(AccelTriangle, BitIdenticalToPart1OnMillionsOfRays) {
   EXPECT_EQ(tally.differ, 0u) << tally.first;
   EXPECT_EQ(tally.filter_lost, 0u) << tally.first;
   EXPECT_EQ(tally.simd_differ, 0u) << tally.first;
+  EXPECT_EQ(tally.eight_differ, 0u) << tally.first;
+  EXPECT_EQ(tally.eight_hits, tally.simd_hits) << "the eight-lane test answers the same hits";
   // Most, not all: these rays aim at corners and edges, where an edge function is exactly 0.
   EXPECT_GT(tally.simd_hits, tally.hits / 2) << "the four-lane test should answer most hits itself";
   EXPECT_GT(tally.filtered, (tally.cases - tally.hits) / 2) << "the filter should reject most misses";
   EXPECT_GT(tally.hits, tally.cases / 5) << "too few hits to be a test";
   EXPECT_LT(tally.hits, tally.cases) << "no misses at all";
   std::printf("%zu cases, %zu hits, %zu differ; filter rejected %zu, wrongly %zu; four-lane test "
-              "answered %zu hits, handed back %zu lanes, differed on %zu\n",
+              "answered %zu hits, handed back %zu lanes, differed on %zu; eight-lane test (%s) "
+              "differed on %zu\n",
               tally.cases, tally.hits, tally.differ, tally.filtered, tally.filter_lost,
-              tally.simd_hits, tally.simd_retests, tally.simd_differ);
+              tally.simd_hits, tally.simd_retests, tally.simd_differ,
+              PT_ACCEL_AVX ? "AVX" : "two four-lane tests", tally.eight_differ);
 }
 
 TEST(AccelTriangle, NonFiniteInputsAnswerAsPart1) {
@@ -177,6 +213,7 @@ TEST(AccelTriangle, NonFiniteInputsAnswerAsPart1) {
   EXPECT_EQ(tally.differ, 0u) << tally.first;
   EXPECT_EQ(tally.filter_lost, 0u) << tally.first;
   EXPECT_EQ(tally.simd_differ, 0u) << tally.first;
+  EXPECT_EQ(tally.eight_differ, 0u) << tally.first;
 }
 
 }  // namespace

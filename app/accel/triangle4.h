@@ -1,7 +1,7 @@
-// Four triangles against one ray at once (SSE where the target has it): the sheared triangle test
-// in four lanes with the very same float operations, so most triangles of a leaf cost a quarter of
-// a test and a hit comes with Part 1's t and barycentrics; only a lane with an edge function of
-// exactly 0 (or a non-finite value) is handed back to the scalar test.
+// Four triangles against one ray at once (SSE where the target has it), or eight (AVX): the
+// sheared triangle test in SIMD lanes with the very same float operations, so most triangles of a
+// leaf cost a fraction of a test and a hit comes with Part 1's t and barycentrics; only a lane
+// with an edge function of exactly 0 (or a non-finite value) is handed back to the scalar test.
 // SOLUTION-ONLY FILE: not in the student handout, since it holds complete Part 1 and Part 2 answers.
 #pragma once
 
@@ -21,10 +21,26 @@ struct alignas(16) Triangle4 {
   float corner[3][3][4];
 };
 
+#if PT_ACCEL_SSE
+/// A sheared ray's per-ray values in every lane of a four-lane register.
+struct ShearedLanes4 {
+  __m128 o[3], sx, sy, sz, tmin;
+};
+#endif
+#if PT_ACCEL_AVX
+/// The same in every lane of an eight-lane register.
+struct ShearedLanes8 {
+  __m256 o[3], sx, sy, sz, tmin;
+};
+#endif
+
 /// A sheared ray with its per-ray values in every lane.
 struct ShearedRay4 {
 #if PT_ACCEL_SSE
-  __m128 o[3], sx, sy, sz, tmin;
+  ShearedLanes4 v4;
+#endif
+#if PT_ACCEL_AVX
+  ShearedLanes8 v8;
 #endif
   ShearedRay r;
   /// Whether triangle4_intersect may finish Part 1's test in SIMD lanes: with a shear of finite
@@ -40,9 +56,14 @@ struct ShearedRay4 {
   void broadcast() {
     finite_shear = std::isfinite(r.sx) && std::isfinite(r.sy) && std::isfinite(r.sz);
 #if PT_ACCEL_SSE
-    for (int a = 0; a < 3; ++a) o[a] = _mm_set1_ps(r.o[a]);
-    sx = _mm_set1_ps(r.sx), sy = _mm_set1_ps(r.sy), sz = _mm_set1_ps(r.sz);
-    tmin = _mm_set1_ps(r.tmin);
+    for (int a = 0; a < 3; ++a) v4.o[a] = _mm_set1_ps(r.o[a]);
+    v4.sx = _mm_set1_ps(r.sx), v4.sy = _mm_set1_ps(r.sy), v4.sz = _mm_set1_ps(r.sz);
+    v4.tmin = _mm_set1_ps(r.tmin);
+#endif
+#if PT_ACCEL_AVX
+    for (int a = 0; a < 3; ++a) v8.o[a] = _mm256_set1_ps(r.o[a]);
+    v8.sx = _mm256_set1_ps(r.sx), v8.sy = _mm256_set1_ps(r.sy), v8.sz = _mm256_set1_ps(r.sz);
+    v8.tmin = _mm256_set1_ps(r.tmin);
 #endif
   }
 };
@@ -50,57 +71,127 @@ struct ShearedRay4 {
 #if PT_ACCEL_SSE
 namespace triangle4_detail {
 
-/// The first steps of intersect_sheared_triangle in four lanes, with its very operations: the
+// The operations the test needs, for four lanes (__m128) and eight (__m256) alike, so that one
+// template below is the test for both: the same operations in the same order, lane by lane.
+inline __m128 add(__m128 a, __m128 b) { return _mm_add_ps(a, b); }
+inline __m128 sub(__m128 a, __m128 b) { return _mm_sub_ps(a, b); }
+inline __m128 mul(__m128 a, __m128 b) { return _mm_mul_ps(a, b); }
+inline __m128 div(__m128 a, __m128 b) { return _mm_div_ps(a, b); }
+inline __m128 max(__m128 a, __m128 b) { return _mm_max_ps(a, b); }
+inline __m128 bit_or(__m128 a, __m128 b) { return _mm_or_ps(a, b); }
+inline __m128 bit_and(__m128 a, __m128 b) { return _mm_and_ps(a, b); }
+inline __m128 and_not(__m128 a, __m128 b) { return _mm_andnot_ps(a, b); }  ///< ~a & b
+inline __m128 eq(__m128 a, __m128 b) { return _mm_cmpeq_ps(a, b); }
+inline __m128 lt(__m128 a, __m128 b) { return _mm_cmplt_ps(a, b); }
+inline __m128 le(__m128 a, __m128 b) { return _mm_cmple_ps(a, b); }
+inline __m128 gt(__m128 a, __m128 b) { return _mm_cmpgt_ps(a, b); }
+inline __m128 ge(__m128 a, __m128 b) { return _mm_cmpge_ps(a, b); }
+inline __m128 not_le(__m128 a, __m128 b) { return _mm_cmpnle_ps(a, b); }
+inline __m128 ordered(__m128 a, __m128 b) { return _mm_cmpord_ps(a, b); }
+inline __m128 unordered(__m128 a, __m128 b) { return _mm_cmpunord_ps(a, b); }
+inline unsigned mask_of(__m128 a) { return unsigned(_mm_movemask_ps(a)); }
+inline void store(float* p, __m128 a) { _mm_store_ps(p, a); }
+template <class V> V splat(float x);
+template <> inline __m128 splat<__m128>(float x) { return _mm_set1_ps(x); }
+inline __m128 all_ones(__m128) { return _mm_castsi128_ps(_mm_set1_epi32(-1)); }
+inline const ShearedLanes4& lanes_of(const ShearedRay4& r, __m128) { return r.v4; }
+#if PT_ACCEL_AVX
+inline __m256 add(__m256 a, __m256 b) { return _mm256_add_ps(a, b); }
+inline __m256 sub(__m256 a, __m256 b) { return _mm256_sub_ps(a, b); }
+inline __m256 mul(__m256 a, __m256 b) { return _mm256_mul_ps(a, b); }
+inline __m256 div(__m256 a, __m256 b) { return _mm256_div_ps(a, b); }
+inline __m256 max(__m256 a, __m256 b) { return _mm256_max_ps(a, b); }
+inline __m256 bit_or(__m256 a, __m256 b) { return _mm256_or_ps(a, b); }
+inline __m256 bit_and(__m256 a, __m256 b) { return _mm256_and_ps(a, b); }
+inline __m256 and_not(__m256 a, __m256 b) { return _mm256_andnot_ps(a, b); }
+// The predicates SSE's comparisons compute (cmple is "less or equal, ordered", and so on).
+inline __m256 eq(__m256 a, __m256 b) { return _mm256_cmp_ps(a, b, _CMP_EQ_OQ); }
+inline __m256 lt(__m256 a, __m256 b) { return _mm256_cmp_ps(a, b, _CMP_LT_OS); }
+inline __m256 le(__m256 a, __m256 b) { return _mm256_cmp_ps(a, b, _CMP_LE_OS); }
+inline __m256 gt(__m256 a, __m256 b) { return _mm256_cmp_ps(a, b, _CMP_GT_OS); }
+inline __m256 ge(__m256 a, __m256 b) { return _mm256_cmp_ps(a, b, _CMP_GE_OS); }
+inline __m256 not_le(__m256 a, __m256 b) { return _mm256_cmp_ps(a, b, _CMP_NLE_US); }
+inline __m256 ordered(__m256 a, __m256 b) { return _mm256_cmp_ps(a, b, _CMP_ORD_Q); }
+inline __m256 unordered(__m256 a, __m256 b) { return _mm256_cmp_ps(a, b, _CMP_UNORD_Q); }
+inline unsigned mask_of(__m256 a) { return unsigned(_mm256_movemask_ps(a)); }
+inline void store(float* p, __m256 a) { _mm256_store_ps(p, a); }
+template <> inline __m256 splat<__m256>(float x) { return _mm256_set1_ps(x); }
+inline __m256 all_ones(__m256) { return _mm256_castsi256_ps(_mm256_set1_epi32(-1)); }
+inline const ShearedLanes8& lanes_of(const ShearedRay4& r, __m256) { return r.v8; }
+#endif
+
+/// A corner coordinate of every lane: one packet's (four lanes) or two packets' side by side
+/// (eight lanes, the first packet low).
+inline __m128 load_corner(const Triangle4* const tri[1], int c, int axis, __m128) {
+  return _mm_load_ps(tri[0]->corner[c][axis]);
+}
+#if PT_ACCEL_AVX
+inline __m256 load_corner(const Triangle4* const tri[2], int c, int axis, __m256) {
+  return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_load_ps(tri[0]->corner[c][axis])),
+                              _mm_load_ps(tri[1]->corner[c][axis]), 1);
+}
+#endif
+
+/// The first steps of intersect_sheared_triangle in SIMD lanes, with its very operations: the
 /// corners relative to the origin and sheared, the edge functions, their sum and the scaled t.
+template <class V>
 struct Edges {
-  __m128 ax, ay, az, bx, by, bz, cx, cy, cz;  ///< sheared corners, z scaled by sz
-  __m128 e0, e1, e2, det, t_scaled;
-  __m128 any_zero;  ///< an edge function of exactly 0, which the scalar test redoes in double
-  __m128 reject;    ///< what the scalar test rejects, by the same comparisons (valid where no zero)
+  V ax, ay, az, bx, by, bz, cx, cy, cz;  ///< sheared corners, z scaled by sz
+  V e0, e1, e2, det, t_scaled;
+  V any_zero;  ///< an edge function of exactly 0, which the scalar test redoes in double
+  V reject;    ///< what the scalar test rejects, by the same comparisons (valid where no zero)
 };
 
-inline Edges edges(const Triangle4& tri, const ShearedRay4& ray, float tmax) {
-  Edges g;
+template <class V>
+__attribute__((always_inline)) inline Edges<V> edges(const Triangle4* const tri[], const ShearedRay4& ray, float tmax) {
+  const V tag{};
+  const auto& r = lanes_of(ray, tag);
+  Edges<V> g;
   const int kx = ray.r.kx, ky = ray.r.ky, kz = ray.r.kz;
-  g.ax = _mm_sub_ps(_mm_load_ps(tri.corner[0][kx]), ray.o[kx]);
-  g.ay = _mm_sub_ps(_mm_load_ps(tri.corner[0][ky]), ray.o[ky]);
-  g.az = _mm_sub_ps(_mm_load_ps(tri.corner[0][kz]), ray.o[kz]);
-  g.bx = _mm_sub_ps(_mm_load_ps(tri.corner[1][kx]), ray.o[kx]);
-  g.by = _mm_sub_ps(_mm_load_ps(tri.corner[1][ky]), ray.o[ky]);
-  g.bz = _mm_sub_ps(_mm_load_ps(tri.corner[1][kz]), ray.o[kz]);
-  g.cx = _mm_sub_ps(_mm_load_ps(tri.corner[2][kx]), ray.o[kx]);
-  g.cy = _mm_sub_ps(_mm_load_ps(tri.corner[2][ky]), ray.o[ky]);
-  g.cz = _mm_sub_ps(_mm_load_ps(tri.corner[2][kz]), ray.o[kz]);
-  g.ax = _mm_add_ps(g.ax, _mm_mul_ps(ray.sx, g.az)), g.ay = _mm_add_ps(g.ay, _mm_mul_ps(ray.sy, g.az));
-  g.bx = _mm_add_ps(g.bx, _mm_mul_ps(ray.sx, g.bz)), g.by = _mm_add_ps(g.by, _mm_mul_ps(ray.sy, g.bz));
-  g.cx = _mm_add_ps(g.cx, _mm_mul_ps(ray.sx, g.cz)), g.cy = _mm_add_ps(g.cy, _mm_mul_ps(ray.sy, g.cz));
-  g.e0 = _mm_sub_ps(_mm_mul_ps(g.bx, g.cy), _mm_mul_ps(g.by, g.cx));
-  g.e1 = _mm_sub_ps(_mm_mul_ps(g.cx, g.ay), _mm_mul_ps(g.cy, g.ax));
-  g.e2 = _mm_sub_ps(_mm_mul_ps(g.ax, g.by), _mm_mul_ps(g.ay, g.bx));
-  const __m128 zero = _mm_setzero_ps();
-  g.any_zero = _mm_or_ps(_mm_or_ps(_mm_cmpeq_ps(g.e0, zero), _mm_cmpeq_ps(g.e1, zero)),
-                         _mm_cmpeq_ps(g.e2, zero));
-  const __m128 any_neg = _mm_or_ps(_mm_or_ps(_mm_cmplt_ps(g.e0, zero), _mm_cmplt_ps(g.e1, zero)),
-                                   _mm_cmplt_ps(g.e2, zero));
-  const __m128 any_pos = _mm_or_ps(_mm_or_ps(_mm_cmpgt_ps(g.e0, zero), _mm_cmpgt_ps(g.e1, zero)),
-                                   _mm_cmpgt_ps(g.e2, zero));
-  g.det = _mm_add_ps(_mm_add_ps(g.e0, g.e1), g.e2);
-  g.az = _mm_mul_ps(g.az, ray.sz), g.bz = _mm_mul_ps(g.bz, ray.sz), g.cz = _mm_mul_ps(g.cz, ray.sz);
-  g.t_scaled = _mm_add_ps(_mm_add_ps(_mm_mul_ps(g.e0, g.az), _mm_mul_ps(g.e1, g.bz)),
-                          _mm_mul_ps(g.e2, g.cz));
-  const __m128 lo = _mm_mul_ps(ray.tmin, g.det), hi = _mm_mul_ps(_mm_set1_ps(tmax), g.det);
-  const __m128 positive = _mm_cmpgt_ps(g.det, zero);
+  g.ax = sub(load_corner(tri, 0, kx, tag), r.o[kx]);
+  g.ay = sub(load_corner(tri, 0, ky, tag), r.o[ky]);
+  g.az = sub(load_corner(tri, 0, kz, tag), r.o[kz]);
+  g.bx = sub(load_corner(tri, 1, kx, tag), r.o[kx]);
+  g.by = sub(load_corner(tri, 1, ky, tag), r.o[ky]);
+  g.bz = sub(load_corner(tri, 1, kz, tag), r.o[kz]);
+  g.cx = sub(load_corner(tri, 2, kx, tag), r.o[kx]);
+  g.cy = sub(load_corner(tri, 2, ky, tag), r.o[ky]);
+  g.cz = sub(load_corner(tri, 2, kz, tag), r.o[kz]);
+  g.ax = add(g.ax, mul(r.sx, g.az)), g.ay = add(g.ay, mul(r.sy, g.az));
+  g.bx = add(g.bx, mul(r.sx, g.bz)), g.by = add(g.by, mul(r.sy, g.bz));
+  g.cx = add(g.cx, mul(r.sx, g.cz)), g.cy = add(g.cy, mul(r.sy, g.cz));
+  g.e0 = sub(mul(g.bx, g.cy), mul(g.by, g.cx));
+  g.e1 = sub(mul(g.cx, g.ay), mul(g.cy, g.ax));
+  g.e2 = sub(mul(g.ax, g.by), mul(g.ay, g.bx));
+  const V zero = splat<V>(0.0f);
+  g.any_zero = bit_or(bit_or(eq(g.e0, zero), eq(g.e1, zero)), eq(g.e2, zero));
+  const V any_neg = bit_or(bit_or(lt(g.e0, zero), lt(g.e1, zero)), lt(g.e2, zero));
+  const V any_pos = bit_or(bit_or(gt(g.e0, zero), gt(g.e1, zero)), gt(g.e2, zero));
+  g.det = add(add(g.e0, g.e1), g.e2);
+  g.az = mul(g.az, r.sz), g.bz = mul(g.bz, r.sz), g.cz = mul(g.cz, r.sz);
+  g.t_scaled = add(add(mul(g.e0, g.az), mul(g.e1, g.bz)), mul(g.e2, g.cz));
+  const V lo = mul(r.tmin, g.det), hi = mul(splat<V>(tmax), g.det);
+  const V positive = gt(g.det, zero);
   // det > 0: out when t_scaled <= tmin·det or >= tmax·det; det < 0 (or NaN): the mirror image.
-  const __m128 out_pos = _mm_or_ps(_mm_cmple_ps(g.t_scaled, lo), _mm_cmpge_ps(g.t_scaled, hi));
-  const __m128 out_neg = _mm_or_ps(_mm_cmpge_ps(g.t_scaled, lo), _mm_cmple_ps(g.t_scaled, hi));
-  const __m128 out_t = _mm_or_ps(_mm_and_ps(positive, out_pos), _mm_andnot_ps(positive, out_neg));
-  g.reject = _mm_or_ps(_mm_and_ps(any_neg, any_pos), _mm_or_ps(_mm_cmpeq_ps(g.det, zero), out_t));
+  const V out_pos = bit_or(le(g.t_scaled, lo), ge(g.t_scaled, hi));
+  const V out_neg = bit_or(ge(g.t_scaled, lo), le(g.t_scaled, hi));
+  const V out_t = bit_or(bit_and(positive, out_pos), and_not(positive, out_neg));
+  g.reject = bit_or(bit_and(any_neg, any_pos), bit_or(eq(g.det, zero), out_t));
   return g;
 }
 
-inline __m128 abs4(__m128 v) { return _mm_andnot_ps(_mm_set1_ps(-0.0f), v); }
+template <class V>
+inline V abs_lanes(V v) { return and_not(splat<V>(-0.0f), v); }
 /// std::max({a, b, c}) for values that are not NaN.
-inline __m128 max3(__m128 a, __m128 b, __m128 c) { return _mm_max_ps(_mm_max_ps(a, b), c); }
+template <class V>
+inline V max3(V a, V b, V c) { return max(max(a, b), c); }
+
+/// The filter's candidates (see triangle4_candidates) among the lanes of `g`.
+template <class V>
+inline unsigned candidates_of(const Edges<V>& g) {
+  return mask_of(bit_or(and_not(g.reject, ordered(g.det, g.det)), g.any_zero)) |
+         mask_of(unordered(g.det, g.det));
+}
 
 }  // namespace triangle4_detail
 #endif
@@ -112,28 +203,28 @@ inline __m128 max3(__m128 a, __m128 b, __m128 c) { return _mm_max_ps(_mm_max_ps(
 inline unsigned triangle4_candidates(const Triangle4& tri, const ShearedRay4& ray, float tmax) {
   if (ray.r.degenerate) return 0u;
 #if PT_ACCEL_SSE
-  const triangle4_detail::Edges g = triangle4_detail::edges(tri, ray, tmax);
-  return unsigned(_mm_movemask_ps(
-             _mm_or_ps(_mm_andnot_ps(g.reject, _mm_cmpord_ps(g.det, g.det)), g.any_zero))) |
-         unsigned(_mm_movemask_ps(_mm_cmpunord_ps(g.det, g.det)));
+  const Triangle4* const packets[1] = {&tri};
+  return triangle4_detail::candidates_of(triangle4_detail::edges<__m128>(packets, ray, tmax));
 #else
   (void)tri, (void)tmax;
   return 0xFu;  // no SIMD: every lane goes to the exact test
 #endif
 }
 
-/// Part 1's triangle test on four triangles at once, carried to the end in SIMD lanes where that
-/// is bit for bit the scalar test, so a hit costs no second, scalar test.
-struct Triangle4Hits {
+/// Part 1's triangle test on N triangles at once (four, or eight where the build has AVX),
+/// carried to the end in SIMD lanes where that is bit for bit the scalar test, so a hit costs no
+/// second, scalar test.
+template <int N>
+struct TriangleLaneHits {
   /// Lanes where intersect_sheared_triangle(ray, tmax, ...) hits, with exactly the t,
   /// barycentrics and t error bound below.
   unsigned hit = 0;
   /// Lanes only intersect_sheared_triangle can decide: an edge function of exactly 0 (it redoes
   /// those in double), a determinant that is not finite, a shear that is not (see ShearedRay4).
   unsigned retest = 0;
-  alignas(16) float t[4], b0[4], b1[4], b2[4], t_error[4];
+  alignas(32) float t[N], b0[N], b1[N], b2[N], t_error[N];
   /// The scaled distance and determinant, for still_hits().
-  alignas(16) float t_scaled[4], det[4];
+  alignas(32) float t_scaled[N], det[N];
 
   /// Whether hit lane `lane` is still a hit of intersect_sheared_triangle with a nearer
   /// tmax (a traversal's cull shrinks as it finds hits): the test's two comparisons with tmax,
@@ -144,68 +235,105 @@ struct Triangle4Hits {
     return t[lane] < tmax;
   }
 };
+using Triangle4Hits = TriangleLaneHits<4>;
+using Triangle8Hits = TriangleLaneHits<8>;
 
-/// Fills *out for the lanes in `lanes` (others may be reported too); the answer for any lane is
-/// the one intersect_sheared_triangle(ray.r, tmax, corners of that lane) gives, or a retest.
-inline void triangle4_intersect(const Triangle4& tri, const ShearedRay4& ray, float tmax,
-                                unsigned lanes, Triangle4Hits* out) {
+#if PT_ACCEL_SSE
+namespace triangle4_detail {
+
+/// The whole test in the lanes of V over the packets `tri` (one for __m128, two for __m256).
+// Always inlined: called from every leaf visit, an out-of-line call spilled the ray's lanes and
+// the cull around each test.
+template <class V, int N>
+__attribute__((always_inline)) inline void intersect_lanes(const Triangle4* const tri[], const ShearedRay4& ray, float tmax,
+                            unsigned lanes, TriangleLaneHits<N>* out) {
   out->hit = out->retest = 0;
   if (ray.r.degenerate) return;
-#if PT_ACCEL_SSE
-  using namespace triangle4_detail;
-  const Edges g = edges(tri, ray, tmax);
-  // The filter's candidates (see triangle4_candidates).
-  const unsigned candidates =
-      lanes & (unsigned(_mm_movemask_ps(_mm_or_ps(
-                   _mm_andnot_ps(g.reject, _mm_cmpord_ps(g.det, g.det)), g.any_zero))) |
-               unsigned(_mm_movemask_ps(_mm_cmpunord_ps(g.det, g.det))));
+  const Edges<V> g = edges<V>(tri, ray, tmax);
+  const unsigned candidates = lanes & candidates_of(g);
   if (candidates == 0) return;
   // With a finite determinant no edge function is infinite, so no sheared corner is either (an
   // infinite coordinate makes a product in two of them infinite or NaN): every max below is of
   // values that are not NaN, where _mm_max_ps is std::max.
-  const __m128 finite = _mm_cmplt_ps(abs4(g.det), _mm_set1_ps(INFINITY));  // false for NaN
-  const __m128 all = _mm_castsi128_ps(_mm_set1_epi32(-1));
-  unsigned scalar = unsigned(_mm_movemask_ps(_mm_or_ps(g.any_zero, _mm_andnot_ps(finite, all))));
-  if (!ray.finite_shear) scalar = 0xFu;
+  const V finite = lt(abs_lanes(g.det), splat<V>(INFINITY));  // false for NaN
+  unsigned scalar = mask_of(bit_or(g.any_zero, and_not(finite, all_ones(finite))));
+  if (!ray.finite_shear) scalar = (1u << N) - 1u;
   out->retest = candidates & scalar;
   if ((candidates & ~scalar) == 0) return;
 
-  const __m128 inv_det = _mm_div_ps(_mm_set1_ps(1.0f), g.det);
-  const __m128 t = _mm_mul_ps(g.t_scaled, inv_det);
-  const __m128 in_range =
-      _mm_and_ps(_mm_cmpgt_ps(t, ray.tmin), _mm_cmplt_ps(t, _mm_set1_ps(tmax)));
-  const __m128 max_z = max3(abs4(g.az), abs4(g.bz), abs4(g.cz));
-  const __m128 max_x = max3(abs4(g.ax), abs4(g.bx), abs4(g.cx));
-  const __m128 max_y = max3(abs4(g.ay), abs4(g.by), abs4(g.cy));
-  const __m128 err_z = _mm_mul_ps(_mm_set1_ps(gamma(3)), max_z);
-  const __m128 err_x = _mm_mul_ps(_mm_set1_ps(gamma(5)), _mm_add_ps(max_x, max_z));
-  const __m128 err_y = _mm_mul_ps(_mm_set1_ps(gamma(5)), _mm_add_ps(max_y, max_z));
-  const __m128 err_e = _mm_mul_ps(
-      _mm_set1_ps(2.0f),
-      _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_mul_ps(_mm_set1_ps(gamma(2)), max_x), max_y),
-                            _mm_mul_ps(err_y, max_x)),
-                 _mm_mul_ps(err_x, max_y)));
-  const __m128 max_e = max3(abs4(g.e0), abs4(g.e1), abs4(g.e2));
-  const __m128 err_t = _mm_mul_ps(
-      _mm_mul_ps(_mm_set1_ps(3.0f),
-                 _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_mul_ps(_mm_set1_ps(gamma(3)), max_e), max_z),
-                                       _mm_mul_ps(err_e, max_z)),
-                            _mm_mul_ps(err_z, max_e))),
-      abs4(inv_det));
+  const auto& r = lanes_of(ray, V{});
+  const V inv_det = div(splat<V>(1.0f), g.det);
+  const V t = mul(g.t_scaled, inv_det);
+  const V in_range = bit_and(gt(t, r.tmin), lt(t, splat<V>(tmax)));
+  const V max_z = max3(abs_lanes(g.az), abs_lanes(g.bz), abs_lanes(g.cz));
+  const V max_x = max3(abs_lanes(g.ax), abs_lanes(g.bx), abs_lanes(g.cx));
+  const V max_y = max3(abs_lanes(g.ay), abs_lanes(g.by), abs_lanes(g.cy));
+  const V err_z = mul(splat<V>(gamma(3)), max_z);
+  const V err_x = mul(splat<V>(gamma(5)), add(max_x, max_z));
+  const V err_y = mul(splat<V>(gamma(5)), add(max_y, max_z));
+  const V err_e = mul(splat<V>(2.0f), add(add(mul(mul(splat<V>(gamma(2)), max_x), max_y),
+                                              mul(err_y, max_x)),
+                                          mul(err_x, max_y)));
+  const V max_e = max3(abs_lanes(g.e0), abs_lanes(g.e1), abs_lanes(g.e2));
+  const V err_t = mul(mul(splat<V>(3.0f), add(add(mul(mul(splat<V>(gamma(3)), max_e), max_z),
+                                                  mul(err_e, max_z)),
+                                              mul(err_z, max_e))),
+                      abs_lanes(inv_det));
   // Rejected when t <= err_t, so a NaN bound rejects nothing.
-  const __m128 accept = _mm_and_ps(in_range, _mm_cmpnle_ps(t, err_t));
-  out->hit = candidates & ~scalar & unsigned(_mm_movemask_ps(accept));
+  const V accept = bit_and(in_range, not_le(t, err_t));
+  out->hit = candidates & ~scalar & mask_of(accept);
   if (out->hit == 0) return;
-  _mm_store_ps(out->t, t);
-  _mm_store_ps(out->b0, _mm_mul_ps(g.e0, inv_det));
-  _mm_store_ps(out->b1, _mm_mul_ps(g.e1, inv_det));
-  _mm_store_ps(out->b2, _mm_mul_ps(g.e2, inv_det));
-  _mm_store_ps(out->t_error, err_t);
-  _mm_store_ps(out->t_scaled, g.t_scaled);
-  _mm_store_ps(out->det, g.det);
+  store(out->t, t);
+  store(out->b0, mul(g.e0, inv_det));
+  store(out->b1, mul(g.e1, inv_det));
+  store(out->b2, mul(g.e2, inv_det));
+  store(out->t_error, err_t);
+  store(out->t_scaled, g.t_scaled);
+  store(out->det, g.det);
+}
+
+}  // namespace triangle4_detail
+#endif
+
+/// Fills *out for the lanes in `lanes` (others may be reported too); the answer for any lane is
+/// the one intersect_sheared_triangle(ray.r, tmax, corners of that lane) gives, or a retest.
+/// Always inlined (as is the eight-lane form below): it runs at every leaf a ray enters.
+__attribute__((always_inline)) inline void triangle4_intersect(const Triangle4& tri,
+                                                               const ShearedRay4& ray, float tmax,
+                                                               unsigned lanes, Triangle4Hits* out) {
+#if PT_ACCEL_SSE
+  const Triangle4* const packets[1] = {&tri};
+  triangle4_detail::intersect_lanes<__m128>(packets, ray, tmax, lanes, out);
 #else
-  (void)tri, (void)tmax;
+  (void)tri, (void)tmax, (void)ray;
+  out->hit = 0;
   out->retest = lanes & 0xFu;  // no SIMD: every lane goes to the scalar test
+#endif
+}
+
+/// triangle4_intersect on two packets at once: lane k of the result is lane k % 4 of packet
+/// k / 4 (`lanes` likewise). One eight-lane test where the build has AVX, else two four-lane ones;
+/// the same answers either way.
+__attribute__((always_inline)) inline void triangle8_intersect(const Triangle4& first,
+                                                               const Triangle4& second,
+                                                               const ShearedRay4& ray, float tmax,
+                                                               unsigned lanes, Triangle8Hits* out) {
+#if PT_ACCEL_AVX
+  const Triangle4* const packets[2] = {&first, &second};
+  triangle4_detail::intersect_lanes<__m256>(packets, ray, tmax, lanes, out);
+#else
+  Triangle4Hits h[2];
+  triangle4_intersect(first, ray, tmax, lanes & 0xFu, &h[0]);
+  triangle4_intersect(second, ray, tmax, lanes >> 4 & 0xFu, &h[1]);
+  out->hit = h[0].hit | h[1].hit << 4;
+  out->retest = h[0].retest | h[1].retest << 4;
+  for (unsigned bits = out->hit; bits; bits &= bits - 1) {
+    const int k = __builtin_ctz(bits);
+    const Triangle4Hits& s = h[k / 4];
+    out->t[k] = s.t[k % 4], out->b0[k] = s.b0[k % 4], out->b1[k] = s.b1[k % 4];
+    out->b2[k] = s.b2[k % 4], out->t_error[k] = s.t_error[k % 4];
+    out->t_scaled[k] = s.t_scaled[k % 4], out->det[k] = s.det[k % 4];
+  }
 #endif
 }
 

@@ -16,6 +16,7 @@
 #include <glm/geometric.hpp>
 
 #include "app/accel/sheared_triangle.h"
+#include "parts/1-raygen/sphere_intersect.h"
 #include "pipeline/1-raygen/scene_intersect.h"
 
 namespace pt {
@@ -314,10 +315,8 @@ inline void prefetch_lines(const void* p, int lines) {
 /// Which of a node's children the ray enters (bit k for slot k), and where (t_entry[k]).
 inline unsigned intersect_node(const WideNode& node, const Box4Ray& ray, float tmax,
                                float t_entry[WideNode::kWidth]) {
-  unsigned mask = 0;
-  for (int b = 0; b < WideNode::kWidth / 4; ++b)
-    mask |= intersect_box4(node.boxes[b], ray, tmax, t_entry + 4 * b) << (4 * b);
-  return mask;
+  static_assert(WideNode::kWidth == 8, "a node is two Box4");
+  return intersect_box8(node.boxes, ray, tmax, t_entry);
 }
 
 /// The cache lines of a leaf of `count` entries; a large binary leaf's first two packets only.
@@ -333,6 +332,10 @@ inline int leaf_lines(uint32_t count) {
   throw std::logic_error("WideBvh: the traversal stack would overflow (a tree deeper than "
                          "Bvh::kMaxDepth, or a box test that lets a ray into every child)");
 }
+
+/// Whether a leaf's packets are tested two at a time: eight lanes a test where the build has AVX;
+/// without it, one packet a test is the same work without the copying.
+constexpr bool kPairPackets = PT_ACCEL_AVX != 0;
 
 /// A node or leaf still to visit, with the distance at which the ray enters its box.
 struct StackEntry {
@@ -370,24 +373,23 @@ void WideBvh::find_nearest(const Ray& ray, Nearest* best) const {
     if (e.t > cull) continue;
     for (;;) {
       if (e.count > 0) {
-        const uint32_t packets = (e.count + Triangle4::kLanes - 1) / Triangle4::kLanes;
-        for (uint32_t p = e.child; p < e.child + packets; ++p) {
-          const LeafPacket& info = packets_[p];
-          Triangle4Hits h;
-          triangle4_intersect(info.tri, sheared4, cull,
-                              kCheckEachCandidate ? info.entries : info.nearest, &h);
+        // The lanes a test of packets [p, p + n) reported, lane k in packet p + k / 4, in order;
+        // each hit checked again against the cull as it is now (an earlier lane's hit may have
+        // brought it nearer since the test).
+        auto take = [&](const auto& h, uint32_t first_packet) {
           for (unsigned lanes = h.hit | h.retest; lanes; lanes &= lanes - 1) {
-            const uint32_t lane = uint32_t(__builtin_ctz(lanes));
+            const uint32_t k = uint32_t(__builtin_ctz(lanes));
+            const uint32_t p = first_packet + k / Triangle4::kLanes;
+            const uint32_t lane = k % Triangle4::kLanes;
+            const LeafPacket& info = packets_[p];
             const uint32_t prim = info.prim[lane];
             float t_error = 0.0f;
             TriangleHit th;
             if (info.triangles >> lane & 1u) {
-              if (h.hit >> lane & 1u) {
-                // Tested against the cull the packet started with: a hit found in an earlier lane
-                // may have brought it nearer since.
-                if (!h.still_hits(lane, cull)) continue;
-                th = {h.t[lane], h.b0[lane], h.b1[lane], h.b2[lane]};
-                t_error = h.t_error[lane];
+              if (h.hit >> k & 1u) {
+                if (!h.still_hits(k, cull)) continue;
+                th = {h.t[k], h.b0[k], h.b1[k], h.b2[k]};
+                t_error = h.t_error[k];
               } else {
                 const Corners c = corners(p, lane);
                 if (!intersect_sheared_triangle(sheared, cull, c.p0, c.p1, c.p2, &th, &t_error))
@@ -395,14 +397,23 @@ void WideBvh::find_nearest(const Ray& ray, Nearest* best) const {
               }
               if (!best->beaten_by(th.t, prim)) continue;
               if (kCheckEachCandidate) {
-                SurfaceHit h;
-                if (!intersect_primitive(scene_, prim, ray, &h)) continue;
+                SurfaceHit sh;
+                if (!intersect_primitive(scene_, prim, ray, &sh)) continue;
               }
             } else {
-              SurfaceHit h;
-              if (!intersect_primitive(scene_, prim, ray, &h)) continue;
-              if (!best->beaten_by(h.t, prim)) continue;
-              th.t = h.t;
+              // A sphere: judged on the t of Part 1's test, and made into a SurfaceHit only if it
+              // wins (as a triangle is), unless each candidate must be checked.
+              float t_sphere;
+              if (kCheckEachCandidate) {
+                SurfaceHit sh;
+                if (!intersect_primitive(scene_, prim, ray, &sh)) continue;
+                t_sphere = sh.t;
+              } else if (!intersect_sphere(ray, scene_.spheres[prim - scene_.triangles.size()],
+                                           &t_sphere)) {
+                continue;
+              }
+              if (!best->beaten_by(t_sphere, prim)) continue;
+              th.t = t_sphere;
             }
             if (kPrefetchShading && prim < scene_.triangles.size()) {
               __builtin_prefetch(&scene_.triangles[prim]);
@@ -417,11 +428,30 @@ void WideBvh::find_nearest(const Ray& ray, Nearest* best) const {
             cull = std::min(ray.tmax, th.t + std::max(std::abs(th.t) * (kHitDistanceSlack - 1.0f),
                                                       2.0f * t_error));
           }
+        };
+        const uint32_t end = e.child + (e.count + Triangle4::kLanes - 1) / Triangle4::kLanes;
+        for (uint32_t p = e.child; p < end;) {
+          if (kPairPackets && p + 1 < end) {
+            const LeafPacket &a = packets_[p], &b = packets_[p + 1];
+            const unsigned lanes = kCheckEachCandidate ? (a.entries | unsigned(b.entries) << 4)
+                                                       : (a.nearest | unsigned(b.nearest) << 4);
+            Triangle8Hits h;
+            triangle8_intersect(a.tri, b.tri, sheared4, cull, lanes, &h);
+            take(h, p);
+            p += 2;
+          } else {
+            const LeafPacket& a = packets_[p];
+            Triangle4Hits h;
+            triangle4_intersect(a.tri, sheared4, cull, kCheckEachCandidate ? a.entries : a.nearest,
+                                &h);
+            take(h, p);
+            p += 1;
+          }
         }
         break;
       }
       const WideNode& node = nodes_[e.child];
-      alignas(16) float t_entry[WideNode::kWidth];
+      alignas(32) float t_entry[WideNode::kWidth];
       const unsigned mask = intersect_node(node, box_ray, cull, t_entry);
       if (mask == 0) break;
       // Children in the node's order for the ray's octant (front to back across each binary
@@ -432,10 +462,17 @@ void WideBvh::find_nearest(const Ray& ray, Nearest* best) const {
       // front-to-back walk of the binary tree takes; the accel tests and bench check that the
       // answers stay brute force's and the binary tree's.
       const unsigned order = node.order_for(octant);
+      // Which positions of the order hold an entered child, found without a branch, so the walk
+      // below goes through those only (a node's children are entered one or two at a time, and a
+      // test per position was a branch the predictor could not learn).
+      unsigned positions = 0;
+      for (int j = 0; j < WideNode::kWidth; ++j)
+        positions |= (mask >> ((order >> (3 * j)) & 7u) & 1u) << j;
       int next = -1;
-      for (int j = WideNode::kWidth - 1; j >= 0; --j) {
+      while (positions) {
+        const int j = 31 - __builtin_clz(positions);
+        positions &= ~(1u << j);
         const int k = int(order >> (3 * j)) & 7;
-        if (!(mask >> k & 1u)) continue;
         if (node.count[k] > 0)
           prefetch_lines(&packets_[node.child[k]], leaf_lines(node.count[k]));
         else
@@ -493,27 +530,45 @@ bool WideBvh::occluded(const Ray& ray) const {
   while (top > 0) {
     const StackEntry e = stack[--top];
     if (e.count > 0) {
-      const uint32_t packets = (e.count + Triangle4::kLanes - 1) / Triangle4::kLanes;
-      for (uint32_t p = e.child; p < e.child + packets; ++p) {
-        const LeafPacket& info = packets_[p];
-        Triangle4Hits h;
-        triangle4_intersect(info.tri, sheared4, ray.tmax, info.entries, &h);
-        if (h.hit & info.triangles) return true;
-        for (unsigned lanes = h.retest; lanes; lanes &= lanes - 1) {
-          const uint32_t lane = uint32_t(__builtin_ctz(lanes));
-          if (info.triangles >> lane & 1u) {
+      // Whether a lane a test of packets from `first_packet` handed back occludes the ray.
+      auto retest_occludes = [&](unsigned retest, uint32_t first_packet) {
+        for (unsigned lanes = retest; lanes; lanes &= lanes - 1) {
+          const uint32_t k = uint32_t(__builtin_ctz(lanes));
+          const uint32_t p = first_packet + k / Triangle4::kLanes;
+          const uint32_t lane = k % Triangle4::kLanes;
+          if (packets_[p].triangles >> lane & 1u) {
             TriangleHit th;
             const Corners c = corners(p, lane);
             if (intersect_sheared_triangle(sheared, ray.tmax, c.p0, c.p1, c.p2, &th)) return true;
-          } else if (primitive_occludes(scene_, info.prim[lane], ray)) {
+          } else if (primitive_occludes(scene_, packets_[p].prim[lane], ray)) {
             return true;
           }
+        }
+        return false;
+      };
+      const uint32_t end = e.child + (e.count + Triangle4::kLanes - 1) / Triangle4::kLanes;
+      for (uint32_t p = e.child; p < end;) {
+        if (kPairPackets && p + 1 < end) {
+          const LeafPacket &a = packets_[p], &b = packets_[p + 1];
+          Triangle8Hits h;
+          triangle8_intersect(a.tri, b.tri, sheared4, ray.tmax, a.entries | unsigned(b.entries) << 4,
+                              &h);
+          if (h.hit & (a.triangles | unsigned(b.triangles) << 4)) return true;
+          if (retest_occludes(h.retest, p)) return true;
+          p += 2;
+        } else {
+          const LeafPacket& a = packets_[p];
+          Triangle4Hits h;
+          triangle4_intersect(a.tri, sheared4, ray.tmax, a.entries, &h);
+          if (h.hit & a.triangles) return true;
+          if (retest_occludes(h.retest, p)) return true;
+          p += 1;
         }
       }
       continue;
     }
     const WideNode& node = nodes_[e.child];
-    alignas(16) float t_entry[WideNode::kWidth];
+    alignas(32) float t_entry[WideNode::kWidth];
     unsigned mask = intersect_node(node, box_ray, ray.tmax, t_entry);
     while (mask) {
       const int k = __builtin_ctz(mask);

@@ -4,9 +4,8 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
-#include <memory>
 
-#include <OpenImageIO/imageio.h>
+#include "framework/image/image_codec.h"
 
 namespace pt {
 namespace {
@@ -30,16 +29,13 @@ void check_writable_target(const std::string& path) {
     throw ImageError(path, "cannot write: folder '" + parent.string() + "' does not exist");
 }
 
-// Writes interleaved pixels through OpenImageIO; `pixel_type` is how they are stored in memory,
-// `spec` says how the file stores them.
-void write_pixels(const std::string& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc pixel_type,
-                  const void* data) {
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out) throw ImageError(path, "cannot write: " + OIIO::geterror());
-  if (!out->open(path, spec)) throw ImageError(path, "cannot write: " + out->geterror());
-  bool ok = out->write_image(pixel_type, data);
-  ok = out->close() && ok;
-  if (!ok) throw ImageError(path, "cannot write: " + out->geterror());
+// Writes interleaved pixels through the image module; `stored` says how they are held in memory
+// (and so in the file).
+void write_pixels(const std::string& path, int width, int height,
+                  const std::vector<std::string>& channels, StoredPixels stored, const void* data) {
+  const std::string error =
+      load_image_codec(path).write(path, width, height, channels, stored, data);
+  if (!error.empty()) throw ImageError(path, error);
 }
 
 void check_size(const std::string& path, int width, int height) {
@@ -92,9 +88,7 @@ void write_png(const std::string& path, int width, int height,
     for (int c = 0; c < 3; ++c)
       bytes[3 * i + size_t(c)] = (unsigned char)std::lround(255.0f * srgb_encode(v[c]));
   }
-  OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
-  spec.attribute("oiio:ColorSpace", "sRGB");
-  write_pixels(path, spec, OIIO::TypeDesc::UINT8, bytes.data());
+  write_pixels(path, width, height, {"R", "G", "B"}, StoredPixels::srgb_bytes, bytes.data());
 }
 
 void write_image(const std::string& path, const Image& image) {
@@ -103,9 +97,8 @@ void write_image(const std::string& path, const Image& image) {
   if (lower_extension(path) == ".png") {
     write_png(path, image.width(), image.height(), [&](size_t i) { return image.pixels()[i]; });
   } else {
-    OIIO::ImageSpec spec(image.width(), image.height(), 3, OIIO::TypeDesc::FLOAT);
-    spec.attribute("oiio:ColorSpace", "Linear");
-    write_pixels(path, spec, OIIO::TypeDesc::FLOAT, image.pixels().data());
+    write_pixels(path, image.width(), image.height(), {"R", "G", "B"}, StoredPixels::linear_floats,
+                 image.pixels().data());
   }
 }
 
@@ -117,22 +110,16 @@ void write_exr(const std::string& path, const ChannelImage& image) {
   if (image.channels.empty()) throw ImageError(path, "cannot write an image with no channels");
   if (image.values.size() != size_t(image.width) * size_t(image.height) * image.channels.size())
     throw ImageError(path, "channel data does not match the image size");
-  OIIO::ImageSpec spec(image.width, image.height, int(image.channels.size()), OIIO::TypeDesc::FLOAT);
-  spec.channelnames = image.channels;
-  spec.attribute("oiio:ColorSpace", "Linear");
-  write_pixels(path, spec, OIIO::TypeDesc::FLOAT, image.values.data());
+  write_pixels(path, image.width, image.height, image.channels, StoredPixels::linear_floats,
+               image.values.data());
 }
 
 ChannelImage read_channels(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw ImageError(path, "no such file");
-  auto in = OIIO::ImageInput::open(path);
-  if (!in) throw ImageError(path, "cannot read: " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = in->spec();
-  ChannelImage image(spec.width, spec.height, spec.channelnames);
-  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.values.data()))
-    throw ImageError(path, "cannot read: " + in->geterror());
-  in->close();
+  ChannelImage image;
+  const std::string error = load_image_codec(path).read(path, &image);
+  if (!error.empty()) throw ImageError(path, error);
   return image;
 }
 

@@ -2,42 +2,41 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <memory>
 
-#include <OpenImageIO/imageio.h>
-
+#include "framework/image/image.h"
 #include "framework/sampling/warp.h"
 
 namespace pt {
 
 bool EnvironmentMap::load(const std::string& path, std::string* error) {
-  auto in = OIIO::ImageInput::open(path);
-  if (!in) {
-    *error = path + ": cannot read the environment map: " + OIIO::geterror();
+  ChannelImage image;
+  try {
+    image = read_channels(path);
+  } catch (const ImageError& e) {
+    // e.what() is "PATH: why"; say it once, as what an environment map needs.
+    *error = path + ": cannot read the environment map: " +
+             std::string(e.what()).substr(std::min(e.path().size() + 2, std::strlen(e.what())));
     return false;
   }
-  const OIIO::ImageSpec& spec = in->spec();
-  if (spec.width < 2 || spec.height < 1) {
+  const int channels = int(image.channels.size());
+  if (image.width < 2 || image.height < 1 || channels < 1) {
     *error = path + ": the environment map is empty";
     return false;
   }
-  std::vector<float> data(size_t(spec.width) * spec.height * spec.nchannels);
-  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, data.data())) {
-    *error = path + ": cannot decode the environment map: " + in->geterror();
-    return false;
-  }
-  std::vector<glm::vec3> rgb(size_t(spec.width) * spec.height);
+  std::vector<glm::vec3> rgb(size_t(image.width) * image.height);
   for (size_t i = 0; i < rgb.size(); ++i)
     for (int c = 0; c < 3; ++c) {
-      float v = data[i * spec.nchannels + std::min(c, spec.nchannels - 1)];
+      float v = image.values[i * channels + std::min(c, channels - 1)];
       if (!std::isfinite(v) || v < 0.0f) {
-        *error = path + ": pixel " + std::to_string(i % spec.width) + "," +
-                 std::to_string(i / spec.width) + " is negative or not finite";
+        *error = path + ": pixel " + std::to_string(i % image.width) + "," +
+                 std::to_string(i / image.width) + " is negative or not finite";
         return false;
       }
       rgb[i][c] = v;
     }
-  set_pixels(spec.width, spec.height, std::move(rgb));
+  set_pixels(image.width, image.height, std::move(rgb));
   return true;
 }
 

@@ -17,8 +17,8 @@ namespace pt {
 /// luminance·sinθ, so bright pixels (the sun) get the samples and the poles are not oversampled.
 class EnvironmentMap {
  public:
-  /// Reads `path` with OpenImageIO. On failure returns false and says why in *error (naming the
-  /// file and the problem).
+  /// Reads `path` through the image module (OpenImageIO). On failure returns false and says why
+  /// in *error (naming the file and the problem).
   bool load(const std::string& path, std::string* error);
   /// A map from pixels already in memory (row-major RGB, top row first), for tests.
   void set_pixels(int width, int height, std::vector<glm::vec3> rgb);

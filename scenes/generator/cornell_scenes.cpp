@@ -1,5 +1,7 @@
 #include "scenes/generator/cornell_scenes.h"
 
+#include <cmath>
+#include <random>
 #include <stdexcept>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -110,6 +112,68 @@ Document dense_room(Document doc, const SceneOptions& options) {
   return doc;
 }
 
+// The held-apart benchmark scene, made unlike the others on purpose: no room around it, so many
+// rays leave into the sky; a ground of two huge triangles under 250 objects whose sizes span 25:1
+// and whose tessellations span 44:1 independently of their size (a big coarse boulder beside a
+// small fine pebble), strewn over the field by a fixed sequence of random numbers, clustered
+// more densely near the middle; three coils and six sliver columns of different heights among
+// them. The camera stands at the field's edge looking across it, a light high above. A tree tuned
+// on the room of dense_mesh has not seen this one.
+Document open_field() {
+  Document doc;
+  doc.lights.push_back({"Sun", glm::vec3(20.0f)});
+  doc.cameras.push_back({"Camera"});
+  doc.materials = {diffuse("ground", glm::vec3(0.5f)), diffuse("stone", glm::vec3(0.7f, 0.65f, 0.6f)),
+                   diffuse("metal", glm::vec3(0.8f, 0.6f, 0.2f))};
+  doc.nodes.push_back({"Sun", rows({4, 0, 0, 0, 0, 4, 0, 0, 0, 0, 1, 12, 0, 0, 0, 1}),
+                       Node::Kind::light, "Sun", ""});
+  // The box's camera orientation (looking along -y, z up), from the field's edge.
+  doc.nodes.push_back({"Camera", rows({-1, 0, 0, 0, 0, 0, 1, 16, 0, 1, 0, 1.6f, 0, 0, 0, 1}),
+                       Node::Kind::camera, "Camera", ""});
+  MeshGeometry ground;
+  ground.name = "ground";
+  ground.mesh = make_quad({-30, -30, 0}, {30, -30, 0}, {30, 30, 0}, {-30, 30, 0}, {0, 0, 1});
+  add_mesh(doc, std::move(ground), "ground", glm::mat4(1.0f));
+
+  // The raw 32-bit outputs of mt19937 are the same everywhere (its distributions are not).
+  std::mt19937 random(20261201u);
+  auto uniform = [&random] { return float(random() >> 8) * 0x1p-24f; };
+  const int resolutions[4] = {3, 6, 12, 20};
+  for (int i = 0; i < 250; ++i) {
+    DenseParams p;
+    p.resolution = resolutions[random() % 4];
+    p.bump_frequency = 3.0 + 10.0 * double(uniform());
+    const float size = 0.02f * std::pow(25.0f, uniform());        // 0.02 .. 0.5
+    const float r = 14.0f * uniform() * uniform();                   // denser near the middle
+    const float angle = 6.2831853f * uniform();
+    MeshGeometry g;
+    g.name = "stone" + std::to_string(i + 1);
+    g.mesh = make_dense_sphere(p);
+    const glm::vec3 at(r * std::cos(angle), r * std::sin(angle), size * float(1.0 + p.bump_amplitude));
+    add_mesh(doc, std::move(g), "stone",
+             glm::scale(glm::translate(glm::mat4(1.0f), at), glm::vec3(size)));
+  }
+  for (int i = 0; i < 3; ++i) {
+    CoilParams c{0.3 + 0.4 * i, 0.2 + 0.1 * i, 3.0 + i, 0.05 + 0.03 * i, 48, 16, 4};
+    MeshGeometry coil;
+    coil.name = "coil" + std::to_string(i + 1);
+    coil.mesh = make_coil(c);
+    add_mesh(doc, std::move(coil), "metal",
+             glm::translate(glm::mat4(1.0f),
+                            glm::vec3(-6.0f + 6.0f * float(i), -2.0f + 3.0f * float(i % 2),
+                                      float(c.tube_radius) + 0.01f)));
+  }
+  for (int i = 0; i < 6; ++i) {
+    ColumnParams c{0.05 + 0.02 * i, 1.0 + 0.8 * i, 512};
+    MeshGeometry column;
+    column.name = "column" + std::to_string(i + 1);
+    column.mesh = make_column(c);
+    add_mesh(doc, std::move(column), "metal",
+             glm::translate(glm::mat4(1.0f), glm::vec3(-9.0f + 3.5f * float(i), 4.0f - 2.5f * float(i % 3), 0.0f)));
+  }
+  return doc;
+}
+
 }  // namespace
 
 std::vector<SceneEntry> scene_entries() {
@@ -127,6 +191,10 @@ std::vector<SceneEntry> scene_entries() {
        "pebbles, a coil and two thin columns",
        false},
       {"dense_sphere", "the box with one bumpy sphere of a million near-equal triangles", false},
+      {"open_field",
+       "no box: 250 stones of unrelated sizes and tessellations, coils and slivers strewn over a "
+       "ground of two triangles, seen across from its edge (bench's held-apart scene)",
+       false},
   };
 }
 
@@ -158,6 +226,7 @@ Document cornell_box() {
 }
 
 Document build_scene(const std::string& name, const SceneOptions& options) {
+  if (name == "open_field") return open_field();
   Document doc = cornell_box();
   if (name == "cornell_empty") return doc;
   if (name == "cornell_spheres") {
