@@ -22,6 +22,9 @@ TEST(importance, plane_under_uniform_sky_is_rho_times_l) {
 // The ceiling over a panel sees the light from behind: no light sample reaches it.
 TEST(importance, ceiling_over_a_panel_is_dark) {
   EXPECT_EQ(test::ceiling_over_panel_light(false), glm::vec3(0.0f));
+  // ...while the floor under it, which the panel faces, is lit (a dark ceiling alone proves
+  // nothing: an estimate of zero everywhere has one).
+  EXPECT_GT(test::floor_under_panel_light(false), 0.0);
 }
 
 // One point light over a plane: the estimate is exact, ρ/π · I cosθ / d².
@@ -73,6 +76,8 @@ TEST(importance, an_area_light_takes_l_samples) {
 
 // What the scene does not need is not done.
 TEST(importance, no_environment_means_a_miss_is_black_at_once) {
+  // Light sampling does light a floor under a panel (so the zero below is a choice, not a stub).
+  EXPECT_GT(test::floor_under_panel_light(false, 4), 0.0);
   Scene s;
   Light l;
   l.kind = LightKind::point;
@@ -86,6 +91,18 @@ TEST(importance, no_environment_means_a_miss_is_black_at_once) {
 }
 
 TEST(importance, a_black_surface_traces_no_shadow_rays) {
+  {
+    // A grey sphere under the same sky takes its shadow rays...
+    Scene grey = test::sphere_under_sky(0.5f, 1.0f);
+    test::Rig rig(grey);
+    rig.ctx.light_samples = 8;
+    Rng rng(1);
+    Ray r;
+    r.o = glm::vec3(0, 0, 3);
+    EXPECT_GT(test::direct_only(rig.ctx, r, rng).x, 0.0f);
+    EXPECT_GT(rig.query.occluded_calls + rig.query.intersect_calls - 1, 0);
+  }
+  // ...a black one, whose f is 0 whatever the direction, takes none.
   Scene s = test::sphere_under_sky(0.0f, 1.0f);
   test::Rig rig(s);
   rig.ctx.light_samples = 8;
