@@ -23,6 +23,7 @@
 #include "app/accel/wide_bvh.h"
 #endif
 #include "app/convergence.h"
+#include "app/strategy_agreement.h"
 #include "framework/math/float_error.h"
 #include "framework/math/frame.h"
 #include "framework/rays/ray_set.h"
@@ -269,7 +270,13 @@ int run(int argc, char** argv) {
   // bench --convergence SCENE is a study of its own (error against time), with its own options.
   for (int i = 1; i < argc; ++i)
     if (std::string(argv[i]).rfind("--convergence", 0) == 0) return convergence_main(argc, argv);
+  // bench --agreement SCENE... renders each strategy at full resolution and compares them.
+  for (int i = 1; i < argc; ++i)
+    if (std::string(argv[i]).rfind("--agreement", 0) == 0) return agreement_main(argc, argv);
   CLI::App app{"bench: BVH build time and rays per second (primary, diffuse, shadow) as JSON"};
+  app.footer("Studies with options of their own: bench --convergence SCENE --help (error against "
+             "time per strategy), bench --agreement SCENE... --help (do the strategies render one "
+             "image?)");
   std::string scene_path, rays_prefix, write_prefix, split = "sah";
   int leaf = 4, width = 640, height = 480;
   bool embree = false, wide = false;

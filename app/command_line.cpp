@@ -150,8 +150,15 @@ int parse_command_line(int argc, char** argv, CommandLine* command, std::ostream
   app.add_option("--bounce", s.only_bounce,
                  "Only the light that took exactly this many bounces (0: emitted, 1: direct)")
       ->check(CLI::NonNegativeNumber);
-  app.add_flag("--file-camera", c.file_camera,
-               "Keep the file's camera where it is (default: centred on the scene, as the course does)");
+  CLI::Option* file_camera = app.add_flag(
+      "--file-camera", c.file_camera,
+      "Keep the file's camera where it is (default: centred on the scene at the file camera's "
+      "distance)");
+  app.add_flag("--course-view", c.course_view,
+               "Frame the scene as the course's renderer does at the same -r: 1.5 x the scene's "
+               "diagonal from its centre, and the pixels of its 800 x 600 window (at -r 480 360 the "
+               "field of view's tangent x 0.6), so images compare with the course's")
+      ->excludes(file_camera);
 
   try {
     app.parse(argc, argv);

@@ -21,6 +21,7 @@ struct CommandLine {
   bool resolution_given = false; ///< -r given; else the width is 480 and the height the scene's aspect
   bool info = false;             ///< --info: describe the scene, render nothing
   bool file_camera = false;      ///< --file-camera: do not centre the camera on the scene
+  bool course_view = false;      ///< --course-view: frame the scene as the course's renderer does at -r
 };
 
 /// A command line that cannot be honoured; what() names the flag and what is wrong.

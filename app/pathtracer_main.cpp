@@ -15,6 +15,7 @@
 #include "app/render_job.h"
 #include "framework/image/estimate_exr.h"
 #include "framework/image/image.h"
+#include "framework/lights/light_set.h"
 #include "framework/render/film.h"
 #include "framework/render/progress.h"
 #include "framework/render/sample_rate.h"
@@ -53,11 +54,17 @@ int run(int argc, char** argv) {
     apply_default_resolution(scene.camera.aspect, &settings);
     check_cell(settings);
   }
-  if (!command.file_camera) centre_camera_on(scene.bounds(), &scene.camera);
+  if (command.course_view)
+    place_course_camera(scene.bounds(), settings.width, settings.height, &scene.camera);
+  else if (!command.file_camera)
+    centre_camera_on(scene.bounds(), &scene.camera);
   apply_lens(settings, &scene.camera);
   if (settings.shading == ShadingMode::light) {
     std::string fallback = materials_falling_back(scene, rendered_material_kinds(settings));
     if (!fallback.empty()) std::cerr << fallback << "\n";
+    const LightSet lights(scene);  // only for what it says; the render builds its own
+    for (const std::string& w : lights.warnings())
+      std::cerr << "warning: " << command.scene_path << ": " << w << "\n";
   }
 
   std::unique_ptr<RayQuery> query = make_ray_query(settings, scene);

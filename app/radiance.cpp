@@ -12,7 +12,7 @@ namespace pt {
 
 std::vector<MaterialKind> rendered_material_kinds(const RenderSettings& settings) {
   if (settings.shading == ShadingMode::normals) return {};
-  return {MaterialKind::diffuse, MaterialKind::mirror, MaterialKind::glass};
+  return {MaterialKind::diffuse, MaterialKind::mirror, MaterialKind::glass, MaterialKind::emission};
 }
 
 // Every ray counts: the query is wrapped in a counter that the integrator traces through, and each

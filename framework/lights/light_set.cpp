@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
+#include <string>
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -70,6 +72,107 @@ float sphere_cone_one_minus_cos(float r, float dist2) {
   return sin2 / (1.0f + safe_sqrt(1.0f - sin2));
 }
 
+// Unit normal of triangle (a, b, c) by its winding, turned to the side of `side` when that is
+// non-zero; zero for a degenerate triangle. Sampling, pdf and emission of a one-sided panel all
+// ask this one function, so they agree on which side of each triangle glows.
+glm::vec3 triangle_normal(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c,
+                          const glm::vec3& side) {
+  glm::vec3 n = glm::cross(b - a, c - a);
+  const float len = glm::length(n);
+  if (!(len > 0.0f) || !std::isfinite(len)) return glm::vec3(0.0f);
+  n /= len;
+  return glm::dot(n, side) < 0.0f ? -n : n;
+}
+
+std::string number(float v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", double(v));
+  return buf;
+}
+std::string rgb(const glm::vec3& v) {
+  if (v.x == v.y && v.y == v.z) return number(v.x);
+  return "(" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + ")";
+}
+bool same_radiance(const glm::vec3& a, const glm::vec3& b) {
+  const float scale = std::max({std::abs(a.x), std::abs(a.y), std::abs(a.z), std::abs(b.x),
+                                std::abs(b.y), std::abs(b.z)});
+  const glm::vec3 d = glm::abs(a - b);
+  return std::max({d.x, d.y, d.z}) <= 1e-5f * scale;
+}
+
+// The warning for area light `l` whose panel is `panel` (its triangles), or "" when the two agree
+// in shape (the panel covers the light's parallelogram and no more) and in radiance.
+std::string panel_disagreement(const Scene& scene, const SampledLight& l,
+                               const std::vector<uint32_t>& panel) {
+  const glm::vec3 n_raw = glm::cross(l.edge_u, l.edge_v);
+  const float n2 = glm::dot(n_raw, n_raw);
+  float s_lo = 1e30f, s_hi = -1e30f, t_lo = 1e30f, t_hi = -1e30f, area = 0.0f;
+  const Material* different = nullptr;
+  for (uint32_t prim : panel) {
+    const Triangle& tri = scene.triangles[prim];
+    const glm::vec3 &a = scene.positions[tri.v[0]], &b = scene.positions[tri.v[1]],
+                    &c = scene.positions[tri.v[2]];
+    area += 0.5f * glm::length(glm::cross(b - a, c - a));
+    for (const glm::vec3& q : {a, b, c}) {
+      const glm::vec3 d = q - l.corner;
+      const float s = glm::dot(glm::cross(d, l.edge_v), n_raw) / n2;
+      const float t = glm::dot(glm::cross(l.edge_u, d), n_raw) / n2;
+      s_lo = std::min(s_lo, s), s_hi = std::max(s_hi, s);
+      t_lo = std::min(t_lo, t), t_hi = std::max(t_hi, t);
+    }
+    const Material& m = scene.materials[tri.material];
+    if (!different && !same_radiance(m.emission, l.radiance)) different = &m;
+  }
+  const float tol = 1e-3f;
+  const bool same_shape = std::abs(s_lo) <= tol && std::abs(s_hi - 1.0f) <= tol &&
+                          std::abs(t_lo) <= tol && std::abs(t_hi - 1.0f) <= tol &&
+                          std::abs(area - l.area) <= tol * l.area;
+  if (same_shape && !different) return "";
+  const Material& shown = different ? *different : scene.materials[scene.triangles[panel[0]].material];
+  const float lu = glm::length(l.edge_u), lv = glm::length(l.edge_v);
+  std::string name = l.source && !l.source->name.empty() ? "\"" + l.source->name + "\" " : "";
+  return "area light " + name + "(" + number(lu) + " × " + number(lv) + ", radiance " +
+         rgb(l.radiance) + ") and its panel (material \"" + shown.name + "\", " +
+         number((s_hi - s_lo) * lu) + " × " + number((t_hi - t_lo) * lv) + " along the light's edges, area " +
+         number(area) + ", emission " + rgb(shown.emission) + ") differ in " +
+         (same_shape ? "radiance" : different ? "shape and radiance" : "shape") +
+         "; rendering one emitter, the panel's shape (what the camera sees) with the light's radiance "
+         "(what lights the scene when the course samples its lights), so that light sampling, MIS and "
+         "hemisphere sampling all see and sample the same light";
+}
+
+// A point on one of light l's triangles, picked with probability area / l.area and uniformly on
+// it; `side` non-zero makes the light one-sided (a panel). Fills ls and returns whether the point
+// can send light towards p.
+bool sample_triangles(const Scene& scene, const SampledLight& l, const glm::vec3& p, glm::vec2 u,
+                      const glm::vec3& side, LightSample* ls) {
+  float pdf_c;
+  int cell;
+  const float x = l.triangle_pick.sample_continuous(u.x, &pdf_c, &cell);
+  const float u0 = std::clamp(x * float(l.triangle_pick.size()) - float(cell), 0.0f, 1.0f);
+  const Triangle& tri = scene.triangles[l.triangles[cell]];
+  const glm::vec3 &a = scene.positions[tri.v[0]], &b = scene.positions[tri.v[1]],
+                  &c = scene.positions[tri.v[2]];
+  const glm::vec3 bary = square_to_uniform_triangle({u0, u.y});
+  const glm::vec3 q = bary.x * a + bary.y * b + bary.z * c;
+  const glm::vec3 n = triangle_normal(a, b, c, side);
+  if (n == glm::vec3(0.0f)) return false;
+  const glm::vec3 d = q - p;
+  const float dist = glm::length(d);
+  if (!(dist > 0.0f) || !std::isfinite(dist)) return false;
+  ls->wi = d / dist;
+  ls->distance = dist;
+  ls->p = q;
+  ls->p_error = gamma(6) * (glm::abs(bary.x * a) + glm::abs(bary.y * b) + glm::abs(bary.z * c));
+  ls->n = n;
+  const float cos_l = glm::dot(-ls->wi, n);
+  if (side != glm::vec3(0.0f) && !(cos_l > 0.0f)) return false;  // the back of a panel
+  // Picking the triangle with probability area/total and a point uniformly on it: 1/total.
+  ls->pdf = area_to_solid_angle_pdf(1.0f / l.area, dist, cos_l);
+  ls->L = ls->pdf > 0.0f ? l.radiance : glm::vec3(0.0f);
+  return true;
+}
+
 }  // namespace
 
 LightSet::LightSet(const Scene& scene, const EnvironmentMap* environment)
@@ -111,29 +214,44 @@ LightSet::LightSet(const Scene& scene, const EnvironmentMap* environment)
   const size_t scene_lights = lights_.size();
   std::map<uint32_t, SampledLight> meshes;  // by material, so the order is deterministic
   std::map<uint32_t, std::vector<float>> mesh_areas;
+  std::vector<std::vector<uint32_t>> panels(scene_lights);
+  std::vector<std::vector<float>> panel_areas(scene_lights);
   for (uint32_t i = 0; i < scene.triangles.size(); ++i) {
     const Triangle& tri = scene.triangles[i];
     if (tri.material >= scene.materials.size() || !scene.materials[tri.material].emissive())
       continue;
     const glm::vec3 &a = scene.positions[tri.v[0]], &b = scene.positions[tri.v[1]],
                     &c = scene.positions[tri.v[2]];
+    float area = 0.5f * glm::length(glm::cross(b - a, c - a));
+    if (!(area > 0.0f) || !std::isfinite(area)) continue;  // degenerate: never hit, never sampled
     int panel_of = -1;
     for (size_t k = 0; k < scene_lights && panel_of < 0; ++k)
       if (lights_[k].kind == SampledLightKind::parallelogram && on_parallelogram(lights_[k], a, b, c))
         panel_of = int(k);
     if (panel_of >= 0) {
-      lights_[panel_of].has_panel = true;
-      primitive_light_[i] = panel_of;
+      panels[panel_of].push_back(i);
+      panel_areas[panel_of].push_back(area);
       continue;
     }
-    float area = 0.5f * glm::length(glm::cross(b - a, c - a));
-    if (!(area > 0.0f) || !std::isfinite(area)) continue;  // degenerate: never hit, never sampled
     SampledLight& m = meshes[tri.material];
     m.kind = SampledLightKind::mesh;
     m.radiance = scene.materials[tri.material].emission;
     m.triangles.push_back(i);
     mesh_areas[tri.material].push_back(area);
     m.area += area;
+  }
+  // An area light with a panel becomes that panel: sampled and hit on the same triangles.
+  for (size_t k = 0; k < scene_lights; ++k) {
+    if (panels[k].empty()) continue;
+    SampledLight& l = lights_[k];
+    std::string warning = panel_disagreement(scene, l, panels[k]);
+    if (!warning.empty()) warnings_.push_back(std::move(warning));
+    l.kind = SampledLightKind::panel;
+    l.triangles = std::move(panels[k]);
+    l.area = 0.0f;
+    for (float a : panel_areas[k]) l.area += a;
+    l.triangle_pick = Distribution1D(panel_areas[k]);
+    for (uint32_t prim : l.triangles) primitive_light_[prim] = int(k);
   }
   for (auto& [material, m] : meshes) {
     m.triangle_pick = Distribution1D(mesh_areas[material]);
@@ -223,27 +341,12 @@ LightSample LightSet::sample(int index, const SurfaceHit& hit, glm::vec2 u) cons
       ls.L = ls.pdf > 0.0f ? l.radiance : glm::vec3(0.0f);
       return ls;
     }
-    case SampledLightKind::mesh: {
-      float pdf_c;
-      int cell;
-      float x = l.triangle_pick.sample_continuous(u.x, &pdf_c, &cell);
-      float u0 = std::clamp(x * float(l.triangle_pick.size()) - float(cell), 0.0f, 1.0f);
-      const Triangle& tri = scene_.triangles[l.triangles[cell]];
-      const glm::vec3 &a = scene_.positions[tri.v[0]], &b = scene_.positions[tri.v[1]],
-                      &c = scene_.positions[tri.v[2]];
-      glm::vec3 bary = square_to_uniform_triangle({u0, u.y});
-      glm::vec3 q = bary.x * a + bary.y * b + bary.z * c;
-      glm::vec3 err = gamma(6) * (glm::abs(bary.x * a) + glm::abs(bary.y * b) + glm::abs(bary.z * c));
-      glm::vec3 n = glm::cross(b - a, c - a);
-      float twice_area = glm::length(n);
-      if (!(twice_area > 0.0f)) return {};
-      n /= twice_area;
-      if (!finish_at(q, err, n)) return {};
-      // Picking the triangle with probability area/total and a point uniformly on it: 1/total.
-      ls.pdf = area_to_solid_angle_pdf(1.0f / l.area, ls.distance, glm::dot(ls.wi, n));
-      ls.L = ls.pdf > 0.0f ? l.radiance : glm::vec3(0.0f);
+    case SampledLightKind::panel:
+      if (!sample_triangles(scene_, l, p, u, l.normal, &ls)) return {};
       return ls;
-    }
+    case SampledLightKind::mesh:
+      if (!sample_triangles(scene_, l, p, u, glm::vec3(0.0f), &ls)) return {};
+      return ls;
     case SampledLightKind::sphere: {
       const Sphere& s = scene_.spheres[l.sphere];
       glm::vec3 dc = s.center - p;
@@ -302,6 +405,15 @@ float LightSet::pdf(int index, const SurfaceHit& hit, const glm::vec3& wi,
       if (!(t > 0.0f) || !(cos_l > 0.0f)) return 0.0f;
       return area_to_solid_angle_pdf(1.0f / l.area, t, cos_l);
     }
+    case SampledLightKind::panel: {
+      if (!on_light || light_of_primitive(on_light->primitive) != index) return 0.0f;
+      const Triangle& tri = scene_.triangles[on_light->primitive];
+      const glm::vec3 n = triangle_normal(scene_.positions[tri.v[0]], scene_.positions[tri.v[1]],
+                                          scene_.positions[tri.v[2]], l.normal);
+      const float cos_l = glm::dot(-wi, n);
+      if (!(cos_l > 0.0f)) return 0.0f;  // its back: sample() never draws it
+      return area_to_solid_angle_pdf(1.0f / l.area, glm::length(on_light->p - hit.p), cos_l);
+    }
     case SampledLightKind::mesh: {
       if (!on_light || light_of_primitive(on_light->primitive) != index) return 0.0f;
       return area_to_solid_angle_pdf(1.0f / l.area, glm::length(on_light->p - hit.p),
@@ -328,8 +440,13 @@ float LightSet::pdf(int index, const SurfaceHit& hit, const glm::vec3& wi,
 glm::vec3 LightSet::emitted(int index, const SurfaceHit& on_light, const glm::vec3& wi) const {
   const SampledLight& l = lights_[index];
   switch (l.kind) {
-    case SampledLightKind::parallelogram:
-      return glm::dot(-wi, l.normal) > 0.0f ? l.radiance : glm::vec3(0.0f);
+    case SampledLightKind::panel: {
+      if (on_light.primitive >= scene_.triangles.size()) return glm::vec3(0.0f);
+      const Triangle& tri = scene_.triangles[on_light.primitive];
+      const glm::vec3 n = triangle_normal(scene_.positions[tri.v[0]], scene_.positions[tri.v[1]],
+                                          scene_.positions[tri.v[2]], l.normal);
+      return glm::dot(-wi, n) > 0.0f ? l.radiance : glm::vec3(0.0f);
+    }
     case SampledLightKind::mesh:
     case SampledLightKind::sphere:
       return l.radiance;
@@ -344,13 +461,10 @@ glm::vec3 LightSet::emitted(int index, const SurfaceHit& on_light, const glm::ve
 }
 
 bool LightSet::unoccluded(const RayQuery& query, const Ray& ray, int index) const {
-  const SampledLight& l = lights_[index];
-  if (l.kind == SampledLightKind::parallelogram && l.has_panel) {
-    // The panel lies on the light, within rounding: the nearest hit may be the panel itself,
-    // which is the light's own face, not a blocker.
-    SurfaceHit h;
-    return !query.intersect(ray, &h) || light_of_primitive(h.primitive) == index;
-  }
+  // Every finite light's samples lie on its own surface (a panel's and a mesh's on their
+  // triangles), and the shadow ray stops short of the sample's error box, so whatever the ray
+  // meets is a blocker.
+  (void)index;
   return !query.occluded(ray);
 }
 

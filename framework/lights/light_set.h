@@ -1,28 +1,40 @@
 // The lights a renderer samples: the scene's lights, its emissive geometry and the environment.
 //
-// The emitter rule (how scene lights and glowing surfaces share the work, never counted twice):
-// - The scene's lights (COLLADA library_lights) are sampled: point, spot and directional lights
-//   once each (delta lights), CGL area lights (parallelograms, one-sided) -l times.
-// - An emissive triangle that lies on an area light (in its plane, its centroid inside the
-//   parallelogram: the course's "light panel" mesh) is that light's visible face. The camera sees its emission
-//   (zero bounce); it is never sampled itself, a path bouncing onto it adds nothing (the area
-//   light's samples already did), and it does not block shadow rays towards its own light.
+// The emitter rule: one emitter, one set of numbers. Whatever reaches "the light" (a camera ray,
+// a ray after a mirror or glass bounce, a hemisphere or BSDF sample) sees exactly what light
+// sampling samples: the same shape, the same radiance, the same side. Nothing is counted twice.
+// - Point, spot and directional lights (COLLADA library_lights) are sampled once each (delta
+//   lights); no ray can hit them.
+// - A CGL area light with an emissive panel on it (triangles in its plane, within a thousandth of
+//   its size, whose centroids lie inside it: the course's "light" mesh) is one emitter: the
+//   panel's triangles, the shape the camera sees, emitting the light's radiance on the light's
+//   side only (one-sided, as the course's area light is). Light sampling picks points on those
+//   triangles by area; a ray that hits one sees the light's radiance from the front and nothing
+//   from behind. When the file's panel and light disagree (CBcoil's panel is 0.8 × 0.6 with
+//   radiance 10 where its light is 0.6 × 0.8 with radiance 5), the course itself renders two
+//   emitters: the camera sees the panel, its light sampling lights the room with the light. We
+//   keep the panel's shape (what students see in the course's images) and the light's radiance
+//   (what lights the scene in the course's default, light-sampled renders), so that every
+//   estimator converges to one image; warnings() says so for each such light.
+// - A CGL area light with no panel is sampled over its parallelogram, one-sided; nothing in the
+//   scene is it, so no ray can hit it (as in the course, the camera does not see it), and
+//   hemisphere sampling cannot see it either, as it cannot see a point light.
 // - Every other emissive triangle becomes a light: one mesh light per emissive material, its
-//   triangles picked in proportion to their area, emitting on both sides (as the course's
-//   emissive meshes do). Every emissive sphere becomes a sphere light. A path bouncing onto them
-//   after a diffuse vertex adds nothing either, since they were sampled there; only after a
-//   specular vertex (which light sampling cannot serve) or with MIS weights is their emission
-//   counted again.
+//   triangles picked in proportion to their area, emitting its material's emission on both sides
+//   (as the course's emissive meshes do). Every emissive sphere becomes a sphere light.
 // - Ambient lights add up to one uniform environment; -e adds an image-based one. Both are
 //   sampled as lights; a ray that misses everything sees their sum.
 // - Lights that cannot emit (zero area, zero radiance, degenerate triangles) are left out, so
 //   nothing ever divides by a zero area.
+// A surface emits only as a light of this set: emitted() is the one answer to "what does this
+// hit send back", for zero-bounce emission, specular paths and MIS's BSDF samples alike.
 #pragma once
 
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -39,7 +51,10 @@
 
 namespace pt {
 
-enum class SampledLightKind { point, spot, directional, parallelogram, mesh, sphere,
+/// parallelogram: an area light without a panel; panel: an area light seen through its panel
+/// (the panel's triangles with the light's radiance, one-sided); mesh: emissive triangles of one
+/// material (two-sided); sphere: an emissive sphere.
+enum class SampledLightKind { point, spot, directional, parallelogram, panel, mesh, sphere,
                               uniform_environment, image_environment };
 
 /// One light sample seen from a shading point: the direction towards the light, the radiance
@@ -61,17 +76,20 @@ struct SampledLight {
   SampledLightKind kind = SampledLightKind::point;
   glm::vec3 radiance{0.0f};       ///< intensity, irradiance or radiance, by kind
   const Light* source = nullptr;  ///< the scene light it came from, if any
-  // parallelogram: corner + s·edge_u + t·edge_v, normal on the emitting side
+  // parallelogram, panel: the area light's corner + s·edge_u + t·edge_v, normal on its emitting
+  // side (a panel emits on the side of its triangles that agrees with it)
   glm::vec3 corner{0.0f}, edge_u{0.0f}, edge_v{0.0f}, normal{0.0f};
-  float area = 0.0f;
-  bool has_panel = false;               ///< emissive triangles on it (it can be hit)
-  std::vector<uint32_t> triangles;      ///< mesh light: its triangles (primitive indices)
-  Distribution1D triangle_pick;         ///< mesh light: by area
+  float area = 0.0f;                    ///< the surface it samples: parallelogram, triangles or sphere
+  std::vector<uint32_t> triangles;      ///< panel, mesh: its triangles (primitive indices)
+  Distribution1D triangle_pick;         ///< panel, mesh: by area
   uint32_t sphere = 0;                  ///< sphere light: index into Scene::spheres
   bool is_delta() const {
     return kind == SampledLightKind::point || kind == SampledLightKind::spot ||
            kind == SampledLightKind::directional;
   }
+  /// Whether a ray can reach it (a BSDF sample, a camera ray): everything but delta lights and
+  /// area lights without a panel. Only then does pdf() answer for a ray that found it.
+  bool can_be_hit() const { return !is_delta() && kind != SampledLightKind::parallelogram; }
   bool is_infinite() const {
     return kind == SampledLightKind::uniform_environment ||
            kind == SampledLightKind::image_environment;
@@ -98,22 +116,18 @@ class LightSet {
   float pdf(int index, const SurfaceHit& hit, const glm::vec3& wi, const SurfaceHit* on_light) const;
 
   /// Which light a ray that hit primitive `primitive` reached: a mesh or sphere light, or the
-  /// area light whose panel it is; -1 for none.
+  /// area light whose panel it is; -1 for none (the surface emits nothing).
   int light_of_primitive(uint32_t primitive) const {
     return primitive < primitive_light_.size() ? primitive_light_[primitive] : -1;
   }
-  /// Whether the surface of `primitive` sends its emission towards `wo` (a direction leaving it):
-  /// an area light's panel only on the side the light faces, as the light's own samples do;
-  /// every other surface on both sides. Without this, a path that sees the back of a panel
-  /// (the ceiling just above it) would be lit by hemisphere sampling and dark by light sampling.
-  bool emits_towards(uint32_t primitive, const glm::vec3& wo) const {
-    const int light = light_of_primitive(primitive);
-    if (light < 0 || lights_[light].kind != SampledLightKind::parallelogram) return true;
-    return glm::dot(wo, lights_[light].normal) > 0.0f;
-  }
-  /// Radiance light `index` sends back along −wi from the point `on_light` (two-sided emitters
-  /// and one-sided area lights alike).
+  /// Radiance light `index` sends back along −wi from the point `on_light` that a ray in
+  /// direction wi reached: a panel only from its light's side (so the ceiling just above a panel
+  /// is dark by every estimator), two-sided emitters from both.
   glm::vec3 emitted(int index, const SurfaceHit& on_light, const glm::vec3& wi) const;
+
+  /// One line per area light whose panel differs from it in shape or radiance, saying what is
+  /// rendered and why (see the emitter rule above); empty when the scene's panels agree.
+  const std::vector<std::string>& warnings() const { return warnings_; }
 
   /// Whether nothing blocks the shadow ray `ray` built for a sample of light `index`.
   bool unoccluded(const RayQuery& query, const Ray& ray, int index) const;
@@ -123,6 +137,7 @@ class LightSet {
   const EnvironmentMap* environment_ = nullptr;
   std::vector<SampledLight> lights_;
   std::vector<int> primitive_light_;
+  std::vector<std::string> warnings_;
   glm::vec3 ambient_{0.0f};
 };
 

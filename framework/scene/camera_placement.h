@@ -13,4 +13,12 @@ namespace pt {
 /// A camera at the centre itself, or empty bounds, is left where it is.
 void centre_camera_on(const Bounds3& bounds, Camera* camera);
 
+/// The view the course's renderer gives when it renders `width` × `height` to a file: it looks at
+/// the centre of `bounds` along the file camera's direction from 1.5 × the length of the bounds'
+/// diagonal, and, having set its camera up for an 800 × 600 window, resizing to width × height
+/// keeps the size of that window's pixels, so the tangent of the half field of view scales by
+/// width/800 across (height/600 down; × 0.6 at the course's usual 480 × 360). Empty bounds
+/// keep the camera where it is; the orientation is always kept.
+void place_course_camera(const Bounds3& bounds, int width, int height, Camera* camera);
+
 }  // namespace pt

@@ -1,7 +1,10 @@
 // The course's camera placement: centred on the scene, the file's direction and distance kept.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 #include "framework/scene/camera_placement.h"
 
@@ -32,6 +35,42 @@ TEST(FrameworkCamera, EmptyBoundsLeaveTheCamera) {
   c.camera_to_world[3] = glm::vec4(1, 2, 3, 1);
   centre_camera_on(Bounds3{}, &c);
   EXPECT_EQ(glm::vec3(c.camera_to_world[3]), glm::vec3(1, 2, 3));
+}
+
+// The course's default view of its Cornell boxes: 1.5 × the box's diagonal from its centre (4.80
+// for the 2 × 2 × 1.5 box, where the file's camera is 3.09 away), and at -r 480 360 the
+// pixels of its 800 × 600 window: the half field of view's tangent × 0.6.
+TEST(FrameworkCamera, CourseViewAtTheCoursesUsualResolution) {
+  Camera c;
+  c.camera_to_world = glm::mat4(glm::vec4(-1, 0, 0, 0), glm::vec4(0, 0, 1, 0),
+                                glm::vec4(0, 1, 0, 0), glm::vec4(0, 3, 0, 1));
+  c.hfov_degrees = 49.13434f;
+  const float tan_before = std::tan(glm::radians(c.hfov_degrees) / 2);
+  Bounds3 box;
+  box.grow(glm::vec3(-1, -1, 0));
+  box.grow(glm::vec3(1, 1, 1.5f));
+  place_course_camera(box, 480, 360, &c);
+  const glm::vec3 p(c.camera_to_world[3]);
+  EXPECT_NEAR(p.x, 0.0f, 1e-6f);
+  EXPECT_NEAR(p.y, 1.5f * std::sqrt(4.0f + 4.0f + 2.25f), 1e-5f);
+  EXPECT_NEAR(p.y, 4.80f, 5e-3f);
+  EXPECT_NEAR(p.z, 0.75f, 1e-6f);
+  EXPECT_EQ(glm::vec3(c.camera_to_world[2]), glm::vec3(0, 1, 0));
+  EXPECT_NEAR(std::tan(glm::radians(c.hfov_degrees) / 2), 0.6f * tan_before, 1e-6f);
+}
+
+// The course's window itself (800 × 600) keeps the file's field of view; a smaller image shows
+// the middle of that window, pixel for pixel.
+TEST(FrameworkCamera, CourseViewKeepsThePixelSizeOfItsWindow) {
+  for (int w : {800, 160, 1600}) {
+    Camera c;
+    c.hfov_degrees = 40.0f;
+    const float tan_before = std::tan(glm::radians(c.hfov_degrees) / 2);
+    place_course_camera(Bounds3{}, w, w * 3 / 4, &c);
+    EXPECT_NEAR(std::tan(glm::radians(c.hfov_degrees) / 2), tan_before * float(w) / 800.0f,
+                1e-6f * float(w))
+        << w;
+  }
 }
 
 }  // namespace

@@ -472,6 +472,9 @@ void ColladaReader::read_effect(pugi::xml_node effect, Material& m) {
         if (pugi::xml_node e = bsdf.child(field)) out = one_float(e);
       };
       if (kind == "emission") {
+        // The course's emission BSDF: it glows and reflects nothing. The phong diffuse colour
+        // Blender writes beside it is kept in albedo but not rendered.
+        m.kind = MaterialKind::emission;
         vec("radiance", m.emission);
       } else if (kind == "mirror") {
         m.kind = MaterialKind::mirror;
@@ -747,6 +750,7 @@ void ColladaReader::add_mesh(const GeometryData& g, pugi::xml_node geom, const g
 void ColladaReader::instance_light(pugi::xml_node inst, const glm::mat4& m) {
   pugi::xml_node el = expect(resolve(inst, "url"), "light", inst);
   Light light;
+  light.name = el.attribute("name") ? el.attribute("name").value() : el.attribute("id").value();
   glm::mat3 linear(m);
   light.position = glm::vec3(m * glm::vec4(0, 0, 0, 1));
   if (!std::isfinite(light.position.x + light.position.y + light.position.z))

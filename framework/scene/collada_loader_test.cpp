@@ -87,14 +87,17 @@ const CourseScene kCourseScenes[] = {
      {{MaterialKind::diffuse, 1}}, 0},
     {"simple/cube.dae", 12, 0, {LightKind::point}, 49.13434f, 1.777778f, {{MaterialKind::diffuse, 1}}, 0},
     {"simple/plane.dae", 2, 0, {LightKind::point}, 49.13434f, 1.777778f, {{MaterialKind::diffuse, 1}}, 0},
-    {"sky/CBbunny.dae", 28588, 0, {LightKind::area}, 49.13434f, 1.777778f, {{MaterialKind::diffuse, 7}}, 2},
-    {"sky/CBempty.dae", 12, 0, {LightKind::point}, 49.13434f, 1.777778f, {{MaterialKind::diffuse, 6}}, 2},
+    {"sky/CBbunny.dae", 28588, 0, {LightKind::area}, 49.13434f, 1.777778f,
+     {{MaterialKind::diffuse, 6}, {MaterialKind::emission, 1}}, 2},
+    {"sky/CBempty.dae", 12, 0, {LightKind::point}, 49.13434f, 1.777778f,
+     {{MaterialKind::diffuse, 5}, {MaterialKind::emission, 1}}, 2},
     {"sky/CBgems.dae", 252, 0, {LightKind::area}, 49.13434f, 1.777778f,
-     {{MaterialKind::diffuse, 6}, {MaterialKind::glass, 3}}, 2},
+     {{MaterialKind::diffuse, 5}, {MaterialKind::glass, 3}, {MaterialKind::emission, 1}}, 2},
     {"sky/CBspheres.dae", 12, 2, {LightKind::area}, 49.13434f, 1.333333f,
-     {{MaterialKind::diffuse, 6}, {MaterialKind::mirror, 1}, {MaterialKind::glass, 1}}, 2},
+     {{MaterialKind::diffuse, 5}, {MaterialKind::mirror, 1}, {MaterialKind::glass, 1},
+      {MaterialKind::emission, 1}}, 2},
     {"sky/CBspheres_lambertian.dae", 12, 2, {LightKind::area}, 49.13434f, 1.333333f,
-     {{MaterialKind::diffuse, 8}}, 2},
+     {{MaterialKind::diffuse, 7}, {MaterialKind::emission, 1}}, 2},
     {"sky/bunny.dae", 33696, 0, {LightKind::ambient}, 49.13434f, 1.333333f, {{MaterialKind::diffuse, 2}}, 0},
 };
 
@@ -417,6 +420,7 @@ TEST(FrameworkColladaLoader, HandSceneTransformsPositionsAndNormals) {
   const Material& lamp = s.materials[s.spheres[1].material];
   EXPECT_TRUE(lamp.emissive());
   expect_near(lamp.emission, {4, 5, 6}, 0, "CGL emission radiance");
+  EXPECT_EQ(lamp.kind, MaterialKind::emission) << "a CGL emitter reflects nothing, as the course reads it";
 
   // Lights.
   ASSERT_EQ(s.lights.size(), 3u);

@@ -1,6 +1,8 @@
 // Light sources as the scene file states them, in world space.
 #pragma once
 
+#include <string>
+
 #include <glm/vec3.hpp>
 
 namespace pt {
@@ -18,6 +20,7 @@ const char* to_string(LightKind kind);
 ///   radiance emitted towards the side `direction` points to (Blender lamps shine down their
 ///   local −Z).
 struct Light {
+  std::string name;  ///< the file's name for it (for messages)
   LightKind kind = LightKind::point;
   glm::vec3 radiance{1.0f};
   glm::vec3 position{0.0f};

@@ -7,9 +7,11 @@
 
 namespace pt {
 
-/// Which scattering model a material asks for. The course's CGL extension adds mirror, glass and
-/// microfacet to COLLADA's diffuse (phong/lambert) colour.
-enum class MaterialKind { diffuse, mirror, glass, microfacet };
+/// Which scattering model a material asks for. The course's CGL extension adds mirror, glass,
+/// microfacet and emission to COLLADA's diffuse (phong/lambert) colour. An emission material is
+/// the course's emitter: it glows and reflects nothing (its BSDF is black), whatever diffuse
+/// colour the file gives it beside its radiance.
+enum class MaterialKind { diffuse, mirror, glass, microfacet, emission };
 
 const char* to_string(MaterialKind kind);
 
@@ -18,7 +20,7 @@ struct Material {
   std::string name;
   MaterialKind kind = MaterialKind::diffuse;
   glm::vec3 albedo{0.8f};          ///< diffuse reflectance (COLLADA diffuse colour)
-  glm::vec3 emission{0.0f};        ///< emitted radiance (CGL emission/radiance)
+  glm::vec3 emission{0.0f};        ///< emitted radiance (CGL emission/radiance, or phong emission)
   glm::vec3 reflectance{1.0f};     ///< mirror, glass: specular reflectance
   glm::vec3 transmittance{1.0f};   ///< glass: transmittance
   float ior = 1.5f;                ///< glass: index of refraction

@@ -8,6 +8,7 @@ const char* to_string(MaterialKind kind) {
     case MaterialKind::mirror: return "mirror";
     case MaterialKind::glass: return "glass";
     case MaterialKind::microfacet: return "microfacet";
+    case MaterialKind::emission: return "emission";
   }
   return "unknown";
 }

@@ -12,7 +12,8 @@ namespace pt {
 namespace {
 
 constexpr MaterialKind kAllMaterialKinds[] = {MaterialKind::diffuse, MaterialKind::mirror,
-                                              MaterialKind::glass, MaterialKind::microfacet};
+                                              MaterialKind::glass, MaterialKind::microfacet,
+                                              MaterialKind::emission};
 constexpr LightKind kAllLightKinds[] = {LightKind::point, LightKind::spot, LightKind::directional,
                                         LightKind::ambient, LightKind::area};
 

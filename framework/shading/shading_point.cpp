@@ -31,6 +31,9 @@ ShadingPointBase::ShadingPointBase(const Scene& scene, const Ray& ray, const Sur
       mirror_ = MirrorBsdf(material->reflectance);
       bsdf = &mirror_;
       break;
+    case MaterialKind::emission:  // the course's emitters glow and reflect nothing
+      bsdf = &black_;
+      break;
     default:  // diffuse; microfacet is rendered by its diffuse albedo until a part renders it
       break;  // ShadingPointWith makes the diffuse BSDF
   }

@@ -12,6 +12,7 @@
 #include "framework/geometry/ray_query.h"
 #include "framework/math/float_error.h"
 #include "framework/render/pixel_stats.h"
+#include "framework/scene/light.h"
 #include "framework/scene/scene.h"
 
 namespace pt::test {
@@ -144,6 +145,57 @@ inline Light ambient_light(const glm::vec3& radiance) {
   l.kind = LightKind::ambient;
   l.radiance = radiance;
   return l;
+}
+
+/// Form factor from a point to a rectangle parallel to the plane it lies in, facing it, at height
+/// h: the rectangle spans [x0, x1] × [y0, y1] measured from the point's foot. A diffuse surface
+/// of albedo ρ under a one-sided emitter of radiance L there reflects ρ·L·F (its irradiance is
+/// π·L·F). By corners: the form factor of [0, a] × [0, b] is
+/// (1/2π)·[A/√(1+A²)·atan(B/√(1+A²)) + B/√(1+B²)·atan(A/√(1+B²))], A = a/h, B = b/h, signed by
+/// the corner's quadrant and summed with signs over the four corners.
+inline double rectangle_form_factor(double x0, double x1, double y0, double y1, double h) {
+  auto corner = [h](double x, double y) {
+    const double a = std::abs(x) / h, b = std::abs(y) / h;
+    const double ra = std::sqrt(1 + a * a), rb = std::sqrt(1 + b * b);
+    const double f = (a / ra * std::atan(b / ra) + b / rb * std::atan(a / rb)) / (2 * M_PI);
+    return (x < 0) == (y < 0) ? f : -f;
+  };
+  return corner(x1, y1) - corner(x0, y1) - corner(x1, y0) + corner(x0, y0);
+}
+
+/// CBcoil's situation in miniature: a floor (albedo 0.5, z = 0) under a panel of emission 10,
+/// 0.8 × 0.6 at z = 0.5, that lies on an area light of radiance 5 turned the other way round
+/// (0.6 × 0.8), shining down. The emitter rule makes them one emitter: the panel's shape with
+/// the light's radiance.
+struct DisagreeingPanel {
+  static constexpr float kHeight = 0.5f, kPanelX = 0.4f, kPanelY = 0.3f;  // half sizes
+  static constexpr float kLightRadiance = 5.0f, kPanelEmission = 10.0f, kFloorAlbedo = 0.5f;
+  /// Direct light the floor reflects at (x, y): ρ·L·F over the panel's rectangle.
+  static double floor_radiance(double x, double y) {
+    return kFloorAlbedo * kLightRadiance *
+           rectangle_form_factor(-kPanelX - x, kPanelX - x, -kPanelY - y, kPanelY - y, kHeight);
+  }
+};
+inline Scene disagreeing_panel_scene(MaterialKind floor_kind = MaterialKind::diffuse) {
+  Scene s;
+  using P = DisagreeingPanel;
+  const uint32_t floor =
+      add_material(s, glm::vec3(P::kFloorAlbedo), glm::vec3(0.0f), floor_kind);
+  const uint32_t panel = add_material(s, glm::vec3(0.8f), glm::vec3(P::kPanelEmission),
+                                      MaterialKind::emission);
+  add_quad(s, {-3, -3, 0}, {3, -3, 0}, {3, 3, 0}, {-3, 3, 0}, floor);
+  add_quad(s, {-P::kPanelX, -P::kPanelY, P::kHeight}, {P::kPanelX, -P::kPanelY, P::kHeight},
+           {P::kPanelX, P::kPanelY, P::kHeight}, {-P::kPanelX, P::kPanelY, P::kHeight}, panel);
+  Light l;
+  l.name = "Light";
+  l.kind = LightKind::area;
+  l.radiance = glm::vec3(P::kLightRadiance);
+  l.position = glm::vec3(0.0f, 0.0f, P::kHeight);
+  l.direction = glm::vec3(0.0f, 0.0f, -1.0f);
+  l.edge_u = glm::vec3(2 * P::kPanelY, 0.0f, 0.0f);  // 0.6 across x
+  l.edge_v = glm::vec3(0.0f, 2 * P::kPanelX, 0.0f);  // 0.8 across y
+  s.lights.push_back(l);
+  return s;
 }
 
 /// Two-sided t-test of a sample mean against a known value: true when the difference is within

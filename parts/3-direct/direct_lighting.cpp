@@ -11,13 +11,15 @@ namespace pt {
 
 glm::vec3 zero_bounce_radiance(const LightingContext& ctx, const Ray& ray, const SurfaceHit& hit) {
   // BEGIN SOLUTION
-  if (hit.material >= ctx.scene.materials.size()) return glm::vec3(0.0f);
-  if (!ctx.lights.emits_towards(hit.primitive, -ray.d)) return glm::vec3(0.0f);
-  return ctx.scene.materials[hit.material].emission;
+  const int light = ctx.lights.light_of_primitive(hit.primitive);
+  if (light < 0) return glm::vec3(0.0f);
+  return ctx.lights.emitted(light, hit, ray.d);
   // END SOLUTION
-  // STUDENT: return the emission of the hit's material (ctx.scene.materials[hit.material]), but
-  // only if the surface emits back towards the ray (ctx.lights.emits_towards(hit.primitive,
-  // -ray.d)): an area light's panel glows on its light's side only.
+  // STUDENT: only the lights of ctx.lights glow, and what they send back is theirs to say, so
+  // that the camera sees exactly the emitter that light sampling samples. Find the light the
+  // hit belongs to (ctx.lights.light_of_primitive(hit.primitive); -1: the surface emits
+  // nothing) and return ctx.lights.emitted(light, hit, ray.d): an area light's panel glows with
+  // its light's radiance, on the light's side only.
   PT_STUDENT_TODO("part 3", "zero_bounce_radiance");
   (void)ctx, (void)ray, (void)hit;
   return glm::vec3(0.0f);

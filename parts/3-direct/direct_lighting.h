@@ -18,7 +18,8 @@ namespace pt {
 /// (the framework's ShadingPointWith cannot name the student's type itself).
 using ShadingPoint = ShadingPointWith<DiffuseBsdf>;
 
-/// Light the surface hit by `ray` emits back along it (zero-bounce radiance).
+/// Light the surface hit by `ray` emits back along it (zero-bounce radiance): what its light in
+/// ctx.lights sends back, so the camera sees the very emitter that light sampling samples.
 glm::vec3 zero_bounce_radiance(const LightingContext& ctx, const Ray& ray, const SurfaceHit& hit);
 
 /// Direct light reflected at `sp` towards the viewer, estimated with ctx.light_samples uniform

@@ -23,18 +23,6 @@ float power_heuristic(int n_a, float pdf_a, int n_b, float pdf_b) {
   return 0.0f;
 }
 
-namespace {
-
-// Whether a BSDF-sampled ray can reach light l at all (given: which lights the LightSet can also
-// meet along a ray is a fact of the light set, not of MIS).
-[[maybe_unused]] bool hittable(const SampledLight& l) {
-  if (l.is_delta()) return false;
-  if (l.kind == SampledLightKind::parallelogram) return l.has_panel;
-  return true;
-}
-
-}  // namespace
-
 glm::vec3 estimate_direct_mis(const LightingContext& ctx, const ShadingPoint& sp, Rng& rng) {
   // BEGIN SOLUTION
   if (sp.bsdf->is_delta()) return glm::vec3(0.0f);
@@ -51,7 +39,7 @@ glm::vec3 estimate_direct_mis(const LightingContext& ctx, const ShadingPoint& sp
       glm::vec3 f = sp.bsdf->f(sp.wo, wi);
       if (f == glm::vec3(0.0f) || ls.L == glm::vec3(0.0f)) continue;
       if (!ctx.lights.unoccluded(ctx.query, spawn_shadow_ray(sp.hit, ls), k)) continue;
-      float w = hittable(lights[k]) ? power_heuristic(n, ls.pdf, ns, sp.bsdf->pdf(sp.wo, wi)) : 1.0f;
+      float w = lights[k].can_be_hit() ? power_heuristic(n, ls.pdf, ns, sp.bsdf->pdf(sp.wo, wi)) : 1.0f;
       sum += f * ls.L * wi.z * (w / ls.pdf);
     }
     L += sum / float(n);
@@ -74,7 +62,7 @@ glm::vec3 estimate_direct_mis(const LightingContext& ctx, const ShadingPoint& sp
     };
     if (ctx.query.intersect(r, &h)) {
       int k = ctx.lights.light_of_primitive(h.primitive);
-      if (k >= 0 && hittable(lights[k])) add(k, &h);
+      if (k >= 0 && lights[k].can_be_hit()) add(k, &h);
     } else {
       for (int k = 0; k < int(lights.size()); ++k)
         if (lights[k].is_infinite()) add(k, nullptr);
@@ -83,11 +71,12 @@ glm::vec3 estimate_direct_mis(const LightingContext& ctx, const ShadingPoint& sp
   return L + sum / float(ns);
   // END SOLUTION
   // STUDENT: zero for a specular BSDF. Light samples as in estimate_direct_importance, each
-  // weighted by power_heuristic(n, ls.pdf, ns, sp.bsdf->pdf(sp.wo, wi)) where the light is
-  // hittable (else weight 1); then ns = ctx.light_samples BSDF samples (sp.bsdf->sample_f), each
-  // ray's light (ctx.lights.light_of_primitive of its hit, or every infinite light when it
-  // escapes) weighted by power_heuristic(ns, pdf_bsdf, n, ctx.lights.pdf(...)) times
-  // ctx.lights.emitted(...). Until then, Part 3's estimate stands in, so renders keep running.
+  // weighted by power_heuristic(n, ls.pdf, ns, sp.bsdf->pdf(sp.wo, wi)) where a ray can hit the
+  // light (lights[k].can_be_hit(); else weight 1); then ns = ctx.light_samples BSDF samples
+  // (sp.bsdf->sample_f), each ray's light (ctx.lights.light_of_primitive of its hit, when that
+  // light can_be_hit(), or every infinite light when it escapes) weighted by
+  // power_heuristic(ns, pdf_bsdf, n, ctx.lights.pdf(...)) times ctx.lights.emitted(...).
+  // Until then, Part 3's estimate stands in, so renders keep running.
   PT_STUDENT_TODO("part 4", "estimate_direct_mis");
   return one_bounce_radiance(ctx, sp, rng);
 }

@@ -126,6 +126,10 @@ std::vector<SceneEntry> scene_entries() {
        "cornell_smooth at 1/20 scale (a box 0.1 wide, the sphere 1.5 thousandths over the "
        "floor): the same image, but a fixed shadow-ray offset of 0.05 or 0.2 skips the occluders",
        true},
+      {"cornell_mirror_coil",
+       "the coil as a mirror, under a panel that disagrees with its light as the course's CBcoil's "
+       "does (panel 0.8 x 0.6 of radiance 10, light 0.6 x 0.8 of radiance 5)",
+       true},
       {"dense_mesh",
        "the box with a million triangles of very different sizes: a detailed bumpy statue, "
        "pebbles, a coil and two thin columns",
@@ -214,6 +218,24 @@ Document build_scene(const std::string& name, const SceneOptions& options) {
     const glm::mat4 shrink = glm::scale(glm::mat4(1.0f), glm::vec3(0.05f));
     for (Node& n : small.nodes) n.transform = shrink * n.transform;
     return small;
+  }
+  if (name == "cornell_mirror_coil") {
+    // The course's CBcoil carries an area light half as bright as its panel and turned the other
+    // way round; the coil's mirror shows the panel to the camera, so a renderer that lets a
+    // mirror see one emitter and light sampling another shows it at once.
+    doc.lights[0].radiance = glm::vec3(5.0f);
+    doc.nodes[0].transform = rows({0.6f, 0, 0, 0, 0, 0.8f, 0, 0, 0, 0, 1, 1.49f, 0, 0, 0, 1});
+    Material mirror = diffuse("chrome", glm::vec3(0.64f));
+    mirror.model = Material::Model::mirror;
+    mirror.reflectance = glm::vec3(0.95f);
+    doc.materials.push_back(mirror);
+    MeshGeometry g;
+    g.name = "coil";
+    g.mesh = make_coil(options.coil);
+    g.faces = MeshGeometry::Faces::triangles;
+    add_mesh(doc, std::move(g), "chrome",
+             glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, float(options.coil.tube_radius) + 0.03f)));
+    return doc;
   }
   if (name == "dense_mesh") return dense_room(std::move(doc), options);
   if (name == "dense_sphere") {

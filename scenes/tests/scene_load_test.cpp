@@ -51,7 +51,7 @@ uint64_t edges_not_shared_twice(const pt::Scene& s, uint32_t material) {
 }
 
 // What every committed scene shares: the course's box, light and camera.
-void expect_cornell_box(const pt::Scene& s, const std::string& name) {
+void expect_cornell_box(const pt::Scene& s, const std::string& name, float light_radiance = 10.0f) {
   SCOPED_TRACE(name);
   EXPECT_EQ(s.up_axis, "Z_UP");
   ASSERT_TRUE(s.has_camera);
@@ -65,14 +65,15 @@ void expect_cornell_box(const pt::Scene& s, const std::string& name) {
   ASSERT_EQ(s.lights.size(), 1u);
   const pt::Light& l = s.lights[0];
   EXPECT_EQ(l.kind, pt::LightKind::area);
-  EXPECT_EQ(l.radiance, glm::vec3(10.0f));
+  EXPECT_EQ(l.radiance, glm::vec3(light_radiance));
   EXPECT_NEAR(glm::distance(l.position, glm::vec3(0, 0, 1.49f)), 0.0f, 1e-6f);
-  EXPECT_NEAR(glm::length(glm::cross(l.edge_u, l.edge_v)), 0.8f * 0.6f, 1e-6f) << "same size as the panel";
+  EXPECT_NEAR(glm::length(glm::cross(l.edge_u, l.edge_v)), 0.8f * 0.6f, 1e-6f) << "the panel's area";
   EXPECT_LT(glm::dot(l.direction, glm::vec3(0, 0, 1)), 0.0f) << "shines down";
 
   const pt::Material* panel = material_named(s, "light");
   ASSERT_NE(panel, nullptr);
   EXPECT_EQ(panel->emission, glm::vec3(10.0f));
+  EXPECT_EQ(panel->kind, pt::MaterialKind::emission) << "the panel glows and reflects nothing";
   const pt::Material* left = material_named(s, "leftWall");
   ASSERT_NE(left, nullptr);
   EXPECT_EQ(left->albedo, glm::vec3(0.6f, 0.2f, 0.2f));
@@ -133,6 +134,20 @@ TEST(SceneLoad, CornellCoilStaysWatertight) {
                           [&](const pt::Triangle& t) { return t.material == id; }),
             6368);
   EXPECT_EQ(edges_not_shared_twice(s, id), 0u);
+}
+
+// CBcoil's situation: the light is half as bright as its panel and turned the other way round
+// (0.6 × 0.8 under a 0.8 × 0.6 panel), and a mirror coil shows the panel to the camera.
+TEST(SceneLoad, CornellMirrorCoilHasCBcoilsDisagreeingLight) {
+  pt::Scene s = load("cornell_mirror_coil");
+  expect_cornell_box(s, "cornell_mirror_coil", 5.0f);
+  EXPECT_NEAR(glm::length(s.lights[0].edge_u), 0.6f, 1e-6f);
+  EXPECT_NEAR(glm::length(s.lights[0].edge_v), 0.8f, 1e-6f);
+  EXPECT_EQ(s.triangles.size(), 12u + 6368u);
+  const pt::Material* coil = material_named(s, "chrome");
+  ASSERT_NE(coil, nullptr);
+  EXPECT_EQ(coil->kind, pt::MaterialKind::mirror);
+  EXPECT_EQ(coil->reflectance, glm::vec3(0.95f));
 }
 
 // Our box frames like the course's: same camera, the same light, the box within the course's

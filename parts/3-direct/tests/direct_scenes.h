@@ -2,9 +2,12 @@
 // renderer computes it (pipeline/3-direct: emission plus one_bounce_radiance, no Part 4).
 #pragma once
 
+#include <string>
+
 #include <glm/vec3.hpp>
 #include <gtest/gtest.h>
 
+#include "framework/scene/collada_loader.h"
 #include "framework/testing/lighting_rig.h"
 #include "parts/3-direct/direct_lighting.h"
 #include "pipeline/3-direct/direct_integrator.h"
@@ -125,6 +128,80 @@ inline glm::vec3 ceiling_over_panel_light(bool hemisphere) {
   glm::vec3 sum(0.0f);
   for (int i = 0; i < 64; ++i) sum += one_bounce_radiance(rig.ctx, sp, rng);
   return sum;
+}
+
+/// A closed box whose six faces are one CGL emitter (radiance 2) with a phong diffuse colour 0.8,
+/// as Blender writes the course's light panels. The course reads such a material as emission
+/// only: every ray inside sees exactly the radiance. Were the panels to reflect their diffuse
+/// colour as well, the irradiance πE inside the uniform enclosure would add a·E to every
+/// direct-light estimate (E/(1 − a) over all bounces).
+struct EmitterBox {
+  static constexpr double kRadiance = 2.0, kDiffuse = 0.8;
+};
+constexpr char kEmitterBoxDae[] = R"(<?xml version="1.0"?>
+<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
+  <library_effects><effect id="glow-fx"><profile_COMMON><technique sid="common"><phong>
+    <emission><color>0 0 0 1</color></emission><diffuse><color>0.8 0.8 0.8 1</color></diffuse>
+  </phong></technique></profile_COMMON>
+  <extra><technique profile="CGL"><emission><radiance>2 2 2</radiance></emission></technique></extra>
+  </effect></library_effects>
+  <library_materials><material id="glow" name="glow"><instance_effect url="#glow-fx"/></material></library_materials>
+  <library_geometries><geometry id="box"><mesh>
+    <source id="box-p"><float_array id="box-pa" count="24">-1 -1 -1 1 -1 -1 -1 1 -1 1 1 -1 -1 -1 1 1 -1 1 -1 1 1 1 1 1</float_array>
+      <technique_common><accessor source="#box-pa" count="8" stride="3"/></technique_common></source>
+    <vertices id="box-v"><input semantic="POSITION" source="#box-p"/></vertices>
+    <polylist material="glow" count="6"><input semantic="VERTEX" source="#box-v" offset="0"/>
+      <vcount>4 4 4 4 4 4</vcount><p>0 2 3 1 4 5 7 6 0 1 5 4 2 6 7 3 0 4 6 2 1 3 7 5</p></polylist>
+  </mesh></geometry></library_geometries>
+  <library_visual_scenes><visual_scene id="s"><node id="n"><instance_geometry url="#box">
+    <bind_material><technique_common><instance_material symbol="glow" target="#glow"/></technique_common></bind_material>
+  </instance_geometry></node></visual_scene></library_visual_scenes>
+  <scene><instance_visual_scene url="#s"/></scene>
+</COLLADA>)";
+inline Scene emitter_box() {
+  return load_collada_string(kEmitterBoxDae, "emitter_box.dae", [](const std::string&) {});
+}
+
+/// Direct light inside the emitter box, by hemisphere or light sampling: exactly the radiance E,
+/// never E(1 + a). Expects it within chance.
+inline void expect_emitter_box_reflects_nothing(bool hemisphere) {
+  const double E = EmitterBox::kRadiance, a = EmitterBox::kDiffuse;
+  const Scene box = emitter_box();
+  ASSERT_EQ(box.triangles.size(), 12u);
+  Rig rig(box);
+  rig.ctx.hemisphere = hemisphere;
+  rig.ctx.light_samples = 4;
+  auto xs = sample_values([&](const Ray& r, Rng& g) { return direct_only(rig.ctx, r, g); },
+                          ray_from_inside, 4000, 3);
+  auto c = t_test_mean(xs, E, kDirectAlpha);
+  EXPECT_TRUE(c.pass) << (hemisphere ? "hemisphere" : "importance") << ": mean " << c.mean
+                      << " ± " << c.stderr_ << ", expected E = " << E
+                      << " (E(1 + a) = " << E * (1 + a) << " if the panels reflected)";
+}
+
+/// CBcoil's panel and light disagree (disagreeing_panel_scene): the floor beside the panel, lit
+/// by it, reflects ρ·L·F with the light's radiance over the panel's rectangle (F by the corner
+/// formula), by hemisphere or light sampling (light sampling of the light's own rectangle would
+/// give 13% less, hemisphere sampling of the panel's emission twice as much). Expects it within
+/// chance.
+inline void expect_floor_sees_the_panels_shape_with_its_lights_radiance(bool hemisphere) {
+  using P = DisagreeingPanel;
+  const double expected = P::floor_radiance(0.4, 0.0);
+  Rig rig(disagreeing_panel_scene());
+  rig.ctx.hemisphere = hemisphere;
+  rig.ctx.light_samples = 4;
+  auto xs = sample_values(
+      [&](const Ray& r, Rng& g) { return direct_only(rig.ctx, r, g); },
+      [](Rng&) {
+        Ray r;
+        r.o = glm::vec3(0.4f, 0.0f, 0.2f);
+        r.d = glm::vec3(0.0f, 0.0f, -1.0f);
+        return r;
+      },
+      hemisphere ? 40000 : 10000, 9);
+  auto c = t_test_mean(xs, expected, kDirectAlpha);
+  EXPECT_TRUE(c.pass) << (hemisphere ? "hemisphere" : "importance") << ": mean " << c.mean
+                      << " ± " << c.stderr_ << ", expected " << expected;
 }
 
 }  // namespace pt::test

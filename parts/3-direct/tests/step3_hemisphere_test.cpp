@@ -26,5 +26,17 @@ TEST(hemisphere, ceiling_over_a_panel_is_dark) {
   EXPECT_GT(test::floor_under_panel_light(true), 0.0);
 }
 
+// A closed box of CGL emitters with a diffuse colour beside their radiance: they glow and reflect
+// nothing, so every direction inside sees exactly their radiance.
+TEST(hemisphere, emitter_panels_reflect_nothing_in_a_closed_box) {
+  test::expect_emitter_box_reflects_nothing(true);
+}
+
+// CBcoil's panel and its light disagree: the floor under them is lit by the panel's shape with
+// the light's radiance, as light sampling lights it.
+TEST(hemisphere, sees_the_panels_shape_with_its_lights_radiance) {
+  test::expect_floor_sees_the_panels_shape_with_its_lights_radiance(true);
+}
+
 }  // namespace
 }  // namespace pt

@@ -113,5 +113,30 @@ TEST(importance, a_black_surface_traces_no_shadow_rays) {
   EXPECT_EQ(rig.query.occluded_calls, 0);
 }
 
+// A closed box of CGL emitters with a diffuse colour beside their radiance: they glow and reflect
+// nothing, so every light sample inside sees exactly their radiance.
+TEST(importance, emitter_panels_reflect_nothing_in_a_closed_box) {
+  test::expect_emitter_box_reflects_nothing(false);
+  // The known amount the panels' reflection would add, seen by the same harness: the box drawn
+  // with its diffuse colour (the reading this replaces) gives E(1 + a).
+  const double E = test::EmitterBox::kRadiance, a = test::EmitterBox::kDiffuse;
+  Scene reflecting = test::emitter_box();
+  for (Material& m : reflecting.materials) m.kind = MaterialKind::diffuse;
+  test::Rig rig(reflecting);
+  rig.ctx.light_samples = 4;
+  auto xs = test::sample_values(
+      [&](const Ray& r, Rng& g) { return test::direct_only(rig.ctx, r, g); },
+      test::ray_from_inside, 4000, 4);
+  auto c = test::t_test_mean(xs, E * (1 + a), test::kDirectAlpha);
+  EXPECT_TRUE(c.pass) << "reflecting panels: mean " << c.mean << " ± " << c.stderr_
+                      << ", expected E(1 + a) = " << E * (1 + a);
+}
+
+// CBcoil's panel and its light disagree: light sampling samples the panel's shape with the
+// light's radiance, not the light's own rectangle.
+TEST(importance, sees_the_panels_shape_with_its_lights_radiance) {
+  test::expect_floor_sees_the_panels_shape_with_its_lights_radiance(false);
+}
+
 }  // namespace
 }  // namespace pt

@@ -1,10 +1,12 @@
 // What the Part 4 step tests share: the path estimator as a test estimator, the closed
-// enclosure whose answer is known at every depth, and a t-test of a mean against its answer.
+// enclosure whose answer is known at every depth, a t-test of a mean against its answer, and the
+// mirror under a panel that disagrees with its light.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include "framework/testing/lighting_rig.h"
@@ -33,6 +35,22 @@ inline void expect_mean(const std::vector<double>& xs, double expected, const st
   auto c = t_test_mean(xs, expected, kPathAlpha);
   EXPECT_TRUE(c.pass) << what << ": mean " << c.mean << " ± " << c.stderr_ << ", expected "
                       << expected;
+}
+
+/// What the camera sees in a mirror floor under CBcoil's disagreeing panel and light
+/// (disagreeing_panel_scene with a mirror floor), at depth 1: the panel with the radiance light
+/// sampling gives it, the light's (5, not the panel's 10). `hemisphere`, `mis` choose the
+/// estimator.
+inline glm::vec3 panel_in_a_mirror(bool hemisphere, bool mis) {
+  Rig rig(disagreeing_panel_scene(MaterialKind::mirror));
+  rig.ctx.hemisphere = hemisphere;
+  rig.ctx.mis = mis;
+  rig.ctx.max_depth = 1;
+  Ray r;
+  r.o = glm::vec3(0.1f, 0.05f, 0.2f);
+  r.d = glm::normalize(glm::vec3(0.05f, 0.02f, -1.0f));
+  Rng rng(3);
+  return estimate_global_illumination(rig.ctx, r, rng);
 }
 
 }  // namespace pt::test

@@ -59,6 +59,15 @@ TEST(bounces, specular_spheres_under_uniform_sky) {
   }
 }
 
+// A mirror floor under CBcoil's panel and light, which disagree: the camera sees the panel in
+// the mirror with the radiance light sampling gives it, the light's, by light and hemisphere
+// sampling alike (MIS: step 4).
+TEST(bounces, a_mirror_shows_the_panel_with_its_lights_radiance) {
+  using P = test::DisagreeingPanel;
+  EXPECT_NEAR(test::panel_in_a_mirror(false, false).x, P::kLightRadiance, 1e-4f) << "light sampling";
+  EXPECT_NEAR(test::panel_in_a_mirror(true, false).x, P::kLightRadiance, 1e-4f) << "hemisphere";
+}
+
 // --- Never a NaN: the full estimator (depth 5, every strategy) ---------------------------------
 
 // Renders `n` random rays at the scene with every combination of strategies, and fails on the

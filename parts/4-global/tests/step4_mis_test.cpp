@@ -33,5 +33,31 @@ TEST(mis, enclosure_converges_to_e_over_one_minus_rho) {
                     E / (1 - rho), "MIS, Russian roulette, depth 1000");
 }
 
+// CBcoil's panel and light disagree (test::disagreeing_panel_scene): MIS's BSDF samples reach the
+// panel and its light samples the same panel, with the light's radiance, so MIS lights the floor
+// as light sampling does: ρ·L·F over the panel's rectangle.
+TEST(mis, sees_the_panels_shape_with_its_lights_radiance) {
+  using P = test::DisagreeingPanel;
+  test::Rig rig(test::disagreeing_panel_scene());
+  rig.ctx.mis = true;
+  rig.ctx.light_samples = 4;
+  rig.ctx.max_depth = 1;
+  auto floor_point = [](Rng&) {
+    Ray r;
+    r.o = glm::vec3(0.4f, 0.0f, 0.2f);
+    r.d = glm::vec3(0.0f, 0.0f, -1.0f);
+    return r;
+  };
+  test::expect_mean(test::sample_values(test::gi(rig.ctx), floor_point, 10000, 12),
+                    P::floor_radiance(0.4, 0.0), "MIS, direct light on the floor");
+}
+
+// The same room with a mirror floor: the camera sees the panel in the mirror with the light's
+// radiance under MIS too, as light sampling gives it.
+TEST(mis, a_mirror_shows_the_panel_with_its_lights_radiance) {
+  using P = test::DisagreeingPanel;
+  EXPECT_NEAR(test::panel_in_a_mirror(false, true).x, P::kLightRadiance, 1e-4f);
+}
+
 }  // namespace
 }  // namespace pt
