@@ -52,6 +52,25 @@ inline Scene panel_under_ceiling() {
   return s;
 }
 
+/// The mean radiance of a floor point under the panel of panel_under_ceiling(), over `n`
+/// estimates: lit, by either estimator (the panel's lit side faces the floor).
+inline double floor_under_panel_light(bool hemisphere, int n = 400) {
+  Scene s = panel_under_ceiling();
+  const uint32_t floor = add_material(s, glm::vec3(0.5f));
+  add_quad(s, {-2, -2, 0}, {2, -2, 0}, {2, 2, 0}, {-2, 2, 0}, floor);
+  Rig rig(s);
+  rig.ctx.hemisphere = hemisphere;
+  Rng rng(11);
+  double sum = 0.0;
+  for (int i = 0; i < n; ++i) {
+    Ray r;
+    r.o = glm::vec3(0.1f, -0.1f, 0.5f);
+    r.d = glm::vec3(0.0f, 0.0f, -1.0f);
+    sum += direct_only(rig.ctx, r, rng).x;
+  }
+  return sum / n;
+}
+
 /// A diffuse plane of albedo 0.3 facing a uniform sky of radiance 1.5.
 inline Scene plane_under_sky() {
   Scene s;

@@ -21,6 +21,9 @@ TEST(hemisphere, plane_under_uniform_sky_is_rho_times_l) {
 // must bring nothing, exactly as light sampling (which sees the light from behind) says.
 TEST(hemisphere, ceiling_over_a_panel_is_dark) {
   EXPECT_EQ(test::ceiling_over_panel_light(true), glm::vec3(0.0f));
+  // ...while the floor under it, which the panel faces, is lit (a dark ceiling alone proves
+  // nothing: an estimate of zero everywhere has one).
+  EXPECT_GT(test::floor_under_panel_light(true), 0.0);
 }
 
 // A closed box of CGL emitters with a diffuse colour beside their radiance: they glow and reflect
