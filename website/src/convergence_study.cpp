@@ -64,15 +64,8 @@ CachedStudy StudyCache::study(const fs::path& scene, const std::string& flags) {
                                     ChildStreams::separate);
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!run.ok() || !fs::exists(scratch / "convergence.csv")) {
-    std::string limit = time_limit_message(run, time_limit_seconds_);
-    std::string why = tail_lines(run.errors + "\n" + run.output, 6);
     fs::remove_all(scratch);
-    if (!limit.empty()) throw RenderError("`" + result.command + "` " + limit);
-    throw RenderError("`" + result.command + "` failed" +
-                      (run.exit_code > 0 ? " with exit code " + std::to_string(run.exit_code)
-                       : run.ok()        ? std::string()
-                                         : " (it " + run.describe() + ")") +
-                      (why.empty() ? ", and wrote no table" : ":\n" + why));
+    throw RenderError(child_failure_message(run, time_limit_seconds_, result.command, "no table"));
   }
   std::ofstream(scratch / "meta.json")
       << nlohmann::json{{"seconds", seconds}, {"command", result.command}}.dump(2);

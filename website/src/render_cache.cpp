@@ -68,10 +68,17 @@ double child_time_limit(int seconds) {
   return seconds > 0 ? double(seconds) : std::numeric_limits<double>::infinity();
 }
 
-std::string time_limit_message(const ChildResult& run, int seconds) {
-  if (!run.timed_out) return "";
-  return "took longer than the time limit of " + std::to_string(seconds) +
-         " s and was stopped (website build --time-limit SECONDS changes it)";
+std::string child_failure_message(const ChildResult& run, int seconds, const std::string& command,
+                                  const std::string& nothing) {
+  if (run.timed_out)
+    return "`" + command + "` took longer than the time limit of " + std::to_string(seconds) +
+           " s and was stopped (website build --time-limit SECONDS changes it)";
+  const std::string why = tail_lines(run.errors + "\n" + run.output, 6);
+  return "`" + command + "` failed" +
+         (run.exit_code > 0 ? " with exit code " + std::to_string(run.exit_code)
+          : run.ok()        ? std::string()
+                            : " (it " + run.describe() + ")") +
+         (why.empty() ? ", and wrote " + nothing : ":\n" + why);
 }
 
 RenderCache::RenderCache(fs::path pathtracer, fs::path cache_dir, int time_limit_seconds)
@@ -152,15 +159,8 @@ CachedRender RenderCache::render(const fs::path& scene, const std::string& flags
                                     ChildStreams::separate);
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!run.ok() || !fs::exists(written)) {
-    std::string limit = time_limit_message(run, time_limit_seconds_);
-    std::string why = tail_lines(run.errors + "\n" + run.output, 6);
     fs::remove_all(scratch);
-    if (!limit.empty()) throw RenderError("`" + result.command + "` " + limit);
-    throw RenderError("`" + result.command + "` failed" +
-                      (run.exit_code > 0 ? " with exit code " + std::to_string(run.exit_code)
-                       : run.ok()        ? std::string()
-                                         : " (it " + run.describe() + ")") +
-                      (why.empty() ? ", and wrote no image" : ":\n" + why));
+    throw RenderError(child_failure_message(run, time_limit_seconds_, result.command, "no image"));
   }
   if (linear) {
     try {

@@ -89,8 +89,10 @@ class RenderCache {
 /// The limit to give the child-process runner for a time limit of `seconds`: none for 0.
 double child_time_limit(int seconds);
 
-/// Why a child run with time limit `seconds` failed, in words, or "" when it was not stopped
-/// at that limit.
-std::string time_limit_message(const ChildResult& run, int seconds);
+/// Why `command`, run with time limit `seconds`, gave no result, in words: stopped at the limit,
+/// its exit code or what ended it, and the last lines it printed (or that it wrote `nothing`,
+/// e.g. "no image", when it printed none). Renders and the convergence study say it alike.
+std::string child_failure_message(const ChildResult& run, int seconds, const std::string& command,
+                                  const std::string& nothing);
 
 }  // namespace pt::web
