@@ -22,7 +22,8 @@ namespace {
 namespace fs = std::filesystem;
 
 const char* const kProjectScenes[] = {"cornell_empty", "cornell_spheres", "cornell_mirror_glass",
-                                      "cornell_coil", "cornell_mirror_coil"};
+                                      "cornell_coil", "cornell_mirror_coil", "cornell_smooth",
+                                      "cornell_small"};
 const char* const kCourseScenes[] = {
     "sky/CBspheres_lambertian", "sky/CBbunny", "sky/CBspheres", "sky/CBgems", "sky/CBempty",
     "sky/bunny", "simple/cube", "simple/plane", "keenan/banana", "meshedit/teapot"};
