@@ -1,4 +1,5 @@
 #include "app/command_line.h"
+#include "app/cli_parse.h"
 
 #include <charconv>
 #include <cmath>
@@ -179,15 +180,9 @@ int parse_command_line(int argc, char** argv, CommandLine* command, std::ostream
                "field of view's tangent x 0.6), so images compare with the course's")
       ->excludes(file_camera);
 
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp&) {
-    out << app.help();
-    return kExitOk;
-  } catch (const CLI::ParseError& e) {
-    err << "pathtracer: " << e.what() << "\nRun with --help for the options.\n";
-    return kExitUsage;
-  }
+  if (auto code = parse_or_exit(app, argc, argv, "pathtracer", "Run with --help for the options.",
+                                out, err))
+    return *code;
 
   try {
     c.resolution_given = !resolution.empty();

@@ -1,4 +1,5 @@
 #include "app/convergence.h"
+#include "app/cli_parse.h"
 
 #include <algorithm>
 #include <chrono>
@@ -493,15 +494,8 @@ int convergence_main(int argc, char** argv) {
       ->capture_default_str();
   app.add_flag("--fresh-reference", o.fresh_reference,
                "Render the reference again even when the cached one matches (after a code change)");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp&) {
-    std::cout << app.help();
-    return 0;
-  } catch (const CLI::ParseError& e) {
-    std::cerr << "bench: " << e.what() << "\nRun bench --convergence SCENE --help for the options.\n";
-    return 2;
-  }
+  if (auto code = parse_or_exit(app, argc, argv, "bench", "Run bench --convergence SCENE --help for the options.", std::cout, std::cerr))
+    return *code;
   o.out_dir = out_dir;
   if (!resolution.empty()) o.width = resolution[0], o.height = resolution[1];
   if (!adaptive.empty()) {

@@ -1,4 +1,5 @@
 #include "app/strategy_agreement.h"
+#include "app/cli_parse.h"
 
 #include <chrono>
 #include <cstdio>
@@ -172,15 +173,8 @@ int agreement_main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   app.add_option("--alpha", o.alpha, "Family-wise significance of each comparison")
       ->capture_default_str()->check(CLI::Range(1e-12, 0.5));
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp&) {
-    std::cout << app.help();
-    return 0;
-  } catch (const CLI::ParseError& e) {
-    std::cerr << "bench: " << e.what() << "\nRun bench --agreement SCENE --help for the options.\n";
-    return 2;
-  }
+  if (auto code = parse_or_exit(app, argc, argv, "bench", "Run bench --agreement SCENE --help for the options.", std::cout, std::cerr))
+    return *code;
   if (!resolution.empty()) {
     if (resolution[0] < 1 || resolution[1] < 1 || resolution[0] > 16384 || resolution[1] > 16384) {
       std::cerr << "bench: -r: width and height must be between 1 and 16384\n";
