@@ -9,6 +9,7 @@
 
 #include "framework/scene/collada_loader.h"
 #include "framework/scene/scene_error.h"
+#include "framework/testing/scene_error_of.h"
 
 namespace pt {
 namespace {
@@ -50,14 +51,7 @@ std::string scene_with(const std::string& array = "0 0 0 1 0 0 0 1 0 1 1 0",
 
 /// Loads `xml` as `name` and returns the error message; fails the test if it loads.
 std::string error_of(const std::string& xml, const std::string& name = "broken.dae") {
-  try {
-    load_collada_string(xml, name, [](const std::string&) {});
-  } catch (const SceneError& e) {
-    EXPECT_EQ(e.file(), name);
-    return e.what();
-  }
-  ADD_FAILURE() << "loaded without an error";
-  return "";
+  return pt::error_of(xml, name);
 }
 
 #define EXPECT_MENTIONS(msg, text) \

@@ -14,6 +14,7 @@
 
 #include "framework/scene/collada_loader.h"
 #include "framework/scene/scene_error.h"
+#include "framework/testing/scene_error_of.h"
 
 namespace pt {
 namespace {
@@ -67,16 +68,9 @@ std::string geometries(const std::string& g) {
   return "<library_geometries>" + g + "</library_geometries>\n";
 }
 
-/// Loads `xml` and returns the error message; fails the test if it loads.
+/// Loads `xml` as `name` and returns the error message; fails the test if it loads.
 std::string error_of(const std::string& xml, const std::string& name = "hostile.dae") {
-  try {
-    load_collada_string(xml, name, [](const std::string&) {});
-  } catch (const SceneError& e) {
-    EXPECT_EQ(e.file(), name);
-    return e.what();
-  }
-  ADD_FAILURE() << "loaded without an error";
-  return "";
+  return pt::error_of(xml, name);
 }
 
 struct Loaded {
