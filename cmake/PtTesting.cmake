@@ -60,6 +60,15 @@ function(pt_add_test)
     TEST_PREFIX "${T_PREFIX}"
     PROPERTIES LABELS "${T_LABELS}" TIMEOUT ${T_TIMEOUT}
     DISCOVERY_TIMEOUT 60)
+  list(LENGTH T_LABELS label_count)
+  if(label_count GREATER 1)
+    # gtest_discover_tests hands its PROPERTIES on as a flat list, so a second label arrives as
+    # a property name of its own and is lost (no test carried `stress`). A file CTest reads after
+    # the discovered list sets the whole list on each of this executable's tests.
+    set(labels_file "${CMAKE_CURRENT_BINARY_DIR}/${T_NAME}_labels.cmake")
+    file(WRITE "${labels_file}" "foreach(t IN LISTS ${T_NAME}_TESTS)\n  set_tests_properties(\"\${t}\" PROPERTIES LABELS \"${T_LABELS}\")\nendforeach()\n")
+    set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES "${labels_file}")
+  endif()
 endfunction()
 
 # pt_add_tests_in(DIR dir LABEL label LIBS lib ... [EXCLUDE regex ...] [STEPS] [OUT var])
