@@ -1,4 +1,6 @@
 // Part 1 stress test: rays aimed exactly at shared edges and vertices of closed meshes never leak.
+// SOLUTION-ONLY FILE: not in the student handout (its control is a float Möller–Trumbore test,
+// a working answer to step 3); the instructor's CI runs it, it is not a graded check.
 //
 // A closed mesh around a ray's origin must stop the ray. Aiming at a point of a shared edge (or
 // at a shared vertex) is the worst case: the ray passes within rounding error of two (or of a
