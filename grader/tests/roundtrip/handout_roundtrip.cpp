@@ -11,6 +11,7 @@
 #include <fstream>
 #include <map>
 #include <regex>
+#include <cstdio>
 #include <set>
 #include <sstream>
 
@@ -150,7 +151,10 @@ TEST(GraderHandoutRoundTrip, HandoutBuildsAndGradesEveryStepAsZero) {
                                  (root / "out").string()}, 600);
   EXPECT_NE(stale.output.find("warning: --no-build"), std::string::npos) << tail(stale.output);
   EXPECT_NE(stale.output.find("parts/1-raygen/camera_ray.cpp"), std::string::npos) << tail(stale.output);
-  fs::remove_all(root);
+  if (HasFailure())
+    std::printf("the handout, its build and the grader's output are kept in %s\n", root.c_str());
+  else
+    fs::remove_all(root);
 }
 
 }  // namespace
