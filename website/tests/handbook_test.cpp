@@ -11,6 +11,8 @@
 #include <regex>
 #include <set>
 
+#include <nlohmann/json.hpp>
+
 #include "framework/text/text_file.h"
 #include "website/tests/test_folder.h"
 
@@ -152,6 +154,38 @@ TEST(handbook, every_step_has_its_row_and_its_section) {
     const Step s{std::stoi((*it)[1]), std::stoi((*it)[2]), (*it)[3]};
     EXPECT_TRUE(steps.count(s)) << "README.md names " << s.id() << ", which no test file makes";
   }
+}
+
+/// The manifest is the one rubric: each of its steps has its README row, and the row names each
+/// of the step's functions with a link to the file the manifest gives for it.
+TEST(handbook, every_manifest_step_row_names_its_functions_at_their_files) {
+  const nlohmann::json manifest = nlohmann::json::parse(read(kRoot / "reference" / "manifest.json"));
+  const std::string readme = one_line(read(kPages / "README.md"));
+  int functions = 0;
+  for (const nlohmann::json& part : manifest.at("parts")) {
+    const int n = part.at("part");
+    if (!part.contains("steps")) GTEST_SKIP() << "the manifest has no steps yet";
+    int k = 0;
+    for (const nlohmann::json& step : part.at("steps")) {
+      const std::string id = "part" + std::to_string(n) + ".step" + std::to_string(++k) + "." +
+                             step.at("name").get<std::string>();
+      const size_t at = readme.find("- `" + id + "`");
+      ASSERT_NE(at, std::string::npos) << "README.md has no row for " << id;
+      const size_t next = readme.find(" - `part", at + 3);
+      const std::string row = readme.substr(at, next == std::string::npos ? std::string::npos : next - at);
+      for (const nlohmann::json& f : step.value("functions", nlohmann::json::array())) {
+        const std::string entry = f.get<std::string>();  // "parts/3-direct/x.cpp: name"
+        const size_t colon = entry.find(": ");
+        ASSERT_NE(colon, std::string::npos) << entry;
+        const std::string file = entry.substr(0, colon), name = entry.substr(colon + 2);
+        EXPECT_NE(row.find("`" + name + "`"), std::string::npos) << id << "'s row does not name " << name;
+        EXPECT_NE(row.find("[`" + file + "`](../../" + file + ")"), std::string::npos)
+            << id << "'s row does not link " << file;
+        ++functions;
+      }
+    }
+  }
+  EXPECT_GE(functions, 20);
 }
 
 /// `f` and `g` in [`path`](...): each function is defined or declared in that file ("f(").
