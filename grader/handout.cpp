@@ -7,6 +7,7 @@
 
 #include "framework/process/child_process.h"
 #include "framework/text/text_file.h"
+#include "grader/handout_readme.h"
 
 namespace fs = std::filesystem;
 
@@ -83,6 +84,7 @@ HandoutSummary make_handout(const std::string& source_dir, const std::string& ou
     if (rel.empty()) continue;
     fs::path from = src / rel;
     if (!fs::is_regular_file(from)) continue;  // deleted in the work tree, or a submodule
+    if (rel == "README.md") continue;  // the instructor's: the student's is written below
     std::string text = read_text_file(from);
     std::string ext = from.extension().string();
     bool source = ext == ".cpp" || ext == ".h" || ext == ".hpp" || ext == ".cc";
@@ -100,6 +102,8 @@ HandoutSummary make_handout(const std::string& source_dir, const std::string& ou
     fs::permissions(to, fs::status(from).permissions());
     ++summary.files;
   }
+  write_student_readme(src.string(), dst.string());
+  ++summary.files;
   return summary;
 }
 

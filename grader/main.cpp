@@ -9,6 +9,7 @@
 
 #include "grader/grade.h"
 #include "grader/handout.h"
+#include "grader/handout_guard.h"
 #include "grader/manifest.h"
 #include "grader/report.h"
 
@@ -93,6 +94,12 @@ int main(int argc, char** argv) {
     std::cerr << "grader: " << e.what() << "\n";
     return 2;
   }
+  if (make_reference && !has_solution(options.source_dir)) {
+    std::cerr << "grader: --make-reference is the instructor's: it renders the references with "
+                 "the complete solution, and " << options.source_dir << " has none (a handout). "
+                 "Grade against the references you were given.\n";
+    return 2;
+  }
   if (make_reference) return make_references(manifest, part, options) ? 0 : 1;
   if (!all && part == 0) {
     std::cerr << "grader: say which part (--part N) or --all\n" << app.help();
@@ -120,6 +127,9 @@ int main(int argc, char** argv) {
   for (const PartSpec& p : manifest.parts) {
     if (!all && p.part != part) continue;
     std::cerr << "grading part " << p.part << (options.isolated ? " (isolated)" : "") << " ...\n";
+    if (no_build)
+      std::cerr << stale_warning(sources_newer_than(
+          options.source_dir, part_binaries(options.build_dir, options.pathtracer, p.part)));
     results.push_back(grade_part(manifest, p.part, options));
     record_state(results.back(), options);
   }

@@ -1,15 +1,30 @@
-// The stub a student function starts with: say once, by name, that it is not written yet.
+// The stub a student function starts with: say once, by name and place, that it is not written yet.
 #pragma once
 
 #include <atomic>
 #include <cstdio>
+#include <string_view>
 
-/// Put at the top of a stub. Prints "part N not implemented: NAME" to stderr the first time the
-/// stub runs (once per stub, not once per pixel), then the stub returns its neutral value.
-#define PT_STUDENT_TODO(part, name)                                                          \
-  do {                                                                                       \
-    static std::atomic<bool> pt_warned_{false};                                              \
-    if (!pt_warned_.exchange(true))                                                          \
-      std::fprintf(stderr, "%s not implemented: %s (see the STUDENT comment there)\n", part, \
-                   name);                                                                    \
+namespace pt::student {
+
+/// A stub's file from the project's root ("parts/1-raygen/camera_ray.cpp"): the compiler's
+/// __FILE__ is an absolute path of the build machine, and stubs live only under parts/.
+inline const char* project_relative(const char* file) {
+  const std::string_view path(file);
+  const size_t at = path.rfind("/parts/");
+  if (at != std::string_view::npos) return file + at + 1;
+  return file;  // already relative (or not a part: said as it is)
+}
+
+}  // namespace pt::student
+
+/// Put at the top of a stub. Prints "part N not implemented: NAME at FILE:LINE" to stderr the
+/// first time the stub runs (once per stub, not once per pixel), FILE relative to the project,
+/// then the stub returns its neutral value.
+#define PT_STUDENT_TODO(part, name)                                                           \
+  do {                                                                                        \
+    static std::atomic<bool> pt_warned_{false};                                               \
+    if (!pt_warned_.exchange(true))                                                           \
+      std::fprintf(stderr, "%s not implemented: %s at %s:%d (see the STUDENT comment there)\n", \
+                   part, name, ::pt::student::project_relative(__FILE__), __LINE__);          \
   } while (0)

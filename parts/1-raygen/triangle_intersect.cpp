@@ -1,4 +1,5 @@
-// Part 1, step 3 (triangle): intersect_triangle, interpolate_normal.
+// Part 1, step 3 (triangle): intersect_triangle, interpolate_normal; step 6 (watertight): the
+// same intersect_triangle, watertight and above its own t error bound.
 #include "parts/1-raygen/triangle_intersect.h"
 
 #include <algorithm>

@@ -18,20 +18,24 @@ namespace pt {
 /// (the framework's ShadingPointWith cannot name the student's type itself).
 using ShadingPoint = ShadingPointWith<DiffuseBsdf>;
 
+/// Step 2 (zero_bounce).
 /// Light the surface hit by `ray` emits back along it (zero-bounce radiance): what its light in
 /// ctx.lights sends back, so the camera sees the very emitter that light sampling samples.
 glm::vec3 zero_bounce_radiance(const LightingContext& ctx, const Ray& ray, const SurfaceHit& hit);
 
+/// Step 3 (hemisphere).
 /// Direct light reflected at `sp` towards the viewer, estimated with ctx.light_samples uniform
 /// directions of the hemisphere: what each direction's ray sees emitted (or the environment,
 /// when it escapes), times f·cosθ, divided by the density 1/2π.
 glm::vec3 estimate_direct_hemisphere(const LightingContext& ctx, const ShadingPoint& sp, Rng& rng);
 
+/// Step 4 (importance).
 /// Direct light reflected at `sp`, estimated by sampling the lights: ctx.light_samples samples
 /// of each area light (one of a delta light), each unblocked sample's f·L·cosθ divided by its
 /// density and averaged per light.
 glm::vec3 estimate_direct_importance(const LightingContext& ctx, const ShadingPoint& sp, Rng& rng);
 
+/// Step 5 (one_bounce).
 /// Direct light at `sp` by the estimator ctx asks for (hemisphere or light sampling); zero for
 /// a specular surface, which no light sample can reach.
 glm::vec3 one_bounce_radiance(const LightingContext& ctx, const ShadingPoint& sp, Rng& rng);

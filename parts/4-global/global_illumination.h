@@ -11,10 +11,12 @@
 
 namespace pt {
 
+/// Given, not a step.
 /// Direct light at `sp` by the estimator ctx asks for: MIS with ctx.mis, else Part 3's
 /// one_bounce_radiance.
 glm::vec3 direct_radiance(const LightingContext& ctx, const ShadingPoint& sp, Rng& rng);
 
+/// Steps 2 (bounces) and 3 (russian_roulette).
 /// Light leaving `sp` towards the viewer after at least one bounce, where `sp` is the path's
 /// vertex number `depth` (the camera ray's hit is 1): the direct light there (which took
 /// `depth` bounces), plus, while depth < ctx.max_depth, what a BSDF-sampled ray brings back
@@ -24,6 +26,7 @@ glm::vec3 direct_radiance(const LightingContext& ctx, const ShadingPoint& sp, Rn
 glm::vec3 at_least_one_bounce_radiance(const LightingContext& ctx, const ShadingPoint& sp,
                                        int depth, Rng& rng);
 
+/// Step 1 (path).
 /// Radiance arriving along a camera ray: the emission it sees (or the environment), plus the
 /// light reflected there after at least one bounce, up to ctx.max_depth bounces.
 glm::vec3 estimate_global_illumination(const LightingContext& ctx, const Ray& ray, Rng& rng);

@@ -9,10 +9,12 @@
 
 namespace pt {
 
+/// Step 4 (mis).
 /// Power heuristic (Veach 1997, β = 2) for a sample of a strategy taken n_a times with density
 /// pdf_a, against one taken n_b times with density pdf_b.
 float power_heuristic(int n_a, float pdf_a, int n_b, float pdf_b);
 
+/// Step 4 (mis).
 /// Direct light at `sp` from ctx.light_samples light samples per light (one per delta light)
 /// and ctx.light_samples BSDF samples, each weighted by the power heuristic, so that whichever
 /// strategy suits the light (a big dim light for the BSDF, a small bright one for the light)

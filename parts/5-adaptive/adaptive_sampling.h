@@ -35,6 +35,7 @@ struct AdaptiveSettings {
 /// point of it: each call takes a new sample (the renderer makes it from Part 1's camera ray).
 using PixelSampleFn = std::function<glm::vec3()>;
 
+/// Step 1 (convergence).
 /// Whether a pixel has converged: the 95% confidence half-width of the estimate the pixel
 /// reports, I = 1.96·σ/√n_E, is at most tolerance·μ, where σ and μ come from the decision
 /// samples' illuminances (`decision`) and n_E = `estimate_count` is the number of samples in
@@ -42,6 +43,7 @@ using PixelSampleFn = std::function<glm::vec3()>;
 /// whose decision samples are all equal (σ = 0) has converged, even a black one.
 bool pixel_converged(const IlluminanceStats& decision, long estimate_count, float tolerance);
 
+/// Step 2 (adaptive_loop).
 /// Samples a pixel in batches of settings.batch samples (each the radiance next_sample()
 /// returns), stopping after the first batch that leaves the pixel converged, or at
 /// settings.max_samples. Sample i goes into the decision statistics if is_decision_sample(i),

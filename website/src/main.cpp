@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "website/src/figure_html.h"
+#include "website/src/handbook.h"
 #include "website/src/site_builder.h"
 #include "website/src/site_checks.h"
 #include "website/src/starter.h"
@@ -51,7 +52,7 @@ int main(int argc, char** argv) {
 
   pt::web::BuildOptions build;
   build.web_dir = PT_WEBSITE_DIR;
-  build.pathtracer = executable_dir() / ".." / "framework" / "app" / "pathtracer";
+  build.pathtracer = executable_dir() / ".." / "app" / "pathtracer";
   std::vector<fs::path> extra_scenes;
   auto* b = app.add_subcommand("build", "Render a write-up into a folder and check it");
   b->add_option("source", build.source, "The write-up's Markdown file")->required()->check(CLI::ExistingFile);
@@ -82,6 +83,13 @@ int main(int argc, char** argv) {
   i->add_flag("--force", init.force, "Replace an existing writeup.md");
 
   fs::path check_dir;
+  pt::web::HandbookOptions handbook;
+  auto* h = app.add_subcommand("handbook", "Build the handout's pages (README and one per part) into a folder");
+  h->add_option("pages", handbook.pages_dir, "The pages' folder (docs/handout)")->required()->check(CLI::ExistingDirectory);
+  h->add_option("-o,--out", handbook.out_dir, "The folder to write")->required();
+  h->add_option("--project", handbook.project_root,
+                "The project the pages' links point into (default: two folders above the pages)");
+
   auto* c = app.add_subcommand("check", "Check a folder before submitting it");
   c->add_option("dir", check_dir, "The folder holding index.html")->required()->check(CLI::ExistingDirectory);
 
@@ -115,6 +123,18 @@ int main(int argc, char** argv) {
       std::cerr << "website: wrote " << file.string() << "; build it with: website build "
                 << file.string() << "\n";
       return 0;
+    }
+    if (*h) {
+      if (handbook.project_root.empty()) handbook.project_root = handbook.pages_dir / ".." / "..";
+      handbook.web_dir = build.web_dir;
+      handbook.pathtracer = fs::weakly_canonical(build.pathtracer);
+      handbook.log = &std::cerr;
+      auto report = pt::web::build_handbook(handbook);
+      int rc = print_problems(report.problems, "handbook failed");
+      if (rc == 0)
+        std::cerr << "website: wrote " << report.pages.size() << " pages to " << handbook.out_dir.string()
+                  << " (" << report.sources.size() << " source files linked)\n";
+      return rc;
     }
     if (*c) {
       int rc = print_problems(pt::web::check_folder(check_dir), "check failed");

@@ -1,3 +1,5 @@
+// SOLUTION-ONLY FILE: not in the student handout (its control is a float Möller–Trumbore test,
+// a working answer to step 3); the instructor's CI runs it, it is not a graded check.
 // Part 1 stress test: a million rays aimed exactly at shared edges and vertices of closed meshes
 // never leak (watertight_rays.h says how they are aimed), and the control that shows such rays
 // find the cracks of a test that is not watertight. The graded watertight step

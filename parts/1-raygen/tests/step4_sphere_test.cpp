@@ -1,18 +1,18 @@
 // Part 1: ray-sphere roots against a long-double reference, on the cases that break the textbook
 // quadratic: far spheres, near-tangent rays, origins inside or on the sphere.
 //
-// REFERENCE. Every float input is exact in long double (64-bit significand); the reference roots
-// use the same cancellation-free formulas in long double, so their own relative error is of order
-// 2^-64 times the problem's conditioning: 2^40 times smaller than the float bound below.
+// REFERENCE. Every float input is exact in long double (64-bit significand). The reference roots
+// are not a formula: each is found by bisection in long double of g(t) = |o + t·d - c|^2 - r^2,
+// on one side or the other of the ray's closest approach to the centre (g is a parabola, so it
+// is monotone there), until the bracket cannot shrink. g is evaluated to about 2^-64 of its
+// terms, so the reference is 2^40 times closer to the exact root than the float bound below.
 //
 // BOUND. With f = o - c, the closest approach t_m = -(f·d)/|d|^2, the ray's distance |v| from the
-// centre and the half-chord w = sqrt(r^2 - |v|^2) / |d|, the roots are t_m ± w. The float code
-//  - rounds f = o - c: the origin moves by up to u|f| per axis, which moves t_m by u|f|/|d| and
-//    |v| by u|f|, hence w by u|f|·|v| / (|d|·sqrt(r^2 - |v|^2));
-//  - then evaluates f·d, d·d, v, |v|, (r - |v|)(r + |v|), the square root, q and the two quotients
-//    in about a dozen roundings, each relative to a quantity of size |f| + r (lengths) or
-//    (|f| + r)^2 (products), and c = |f|^2 - r^2 enters only through c/q = t_m ∓ w.
-// So, with room for the constants of that dozen roundings:
+// centre and the half-chord w = sqrt(r^2 - |v|^2) / |d|, the exact roots are t_m ± w. Rounding
+// f = o - c alone moves the origin by up to u|f| per axis, which moves t_m by u|f|/|d| and |v|
+// by u|f|, hence w by u|f|·|v| / (|d|·sqrt(r^2 - |v|^2)); a cancellation-free evaluation adds a
+// dozen or so roundings, each relative to a quantity of size |f| + r (lengths) or (|f| + r)^2
+// (products). So, with room for their constants:
 //   |t_float - t| <= 32·u·(|f| + r)/|d| · (1 + r / sqrt(r^2 - |v|^2)).
 // The first term is the float resolution of the scene itself (far spheres lose nothing more: with
 // |f| = 1e4 and r = 1 it is about 2e-3 absolute, 2e-7 relative to t ≈ 1e4). The second is the
@@ -43,6 +43,23 @@ struct Tally {
   LD max_rel = 0, max_ratio = 0;
 };
 
+/// The root of g(t) = |f + t·d|^2 - r^2 in [lo, hi], where g changes sign, by bisection.
+LD bisect_root(const LD f[3], const LD d[3], LD r, LD lo, LD hi) {
+  auto g = [&](LD t) {
+    LD sum = 0;
+    for (int i = 0; i < 3; ++i) sum += (f[i] + t * d[i]) * (f[i] + t * d[i]);
+    return sum - r * r;
+  };
+  const bool rising = g(hi) > 0;
+  for (int i = 0; i < 400; ++i) {
+    const LD mid = lo + (hi - lo) / 2;
+    if (!(mid > lo && mid < hi)) break;
+    if ((g(mid) > 0) == rising) hi = mid;
+    else lo = mid;
+  }
+  return lo + (hi - lo) / 2;
+}
+
 void check(const Ray& ray, const Sphere& s, Tally* tally, const char* kind) {
   ++tally->cases;
   float tf = 0;
@@ -69,10 +86,9 @@ void check(const Ray& ray, const Sphere& s, Tally* tally, const char* kind) {
   LD certain = INFINITY, uncertain[2];
   int n_uncertain = 0;
   if (vlen < r) {
-    const LD disc = a * (r - vlen) * (r + vlen);
-    const LD q = -(h + std::copysign(std::sqrt(disc), h));
     bound = scale / dlen * (1 + r / std::sqrt((r - vlen) * (r + vlen)));
-    for (LD root : {q / a, (f2 - r * r) / q}) {
+    const LD tm = -h / a, reach = 2 * r / dlen;  // past reach the ray is outside the sphere
+    for (LD root : {bisect_root(f, d, r, tm - reach, tm), bisect_root(f, d, r, tm, tm + reach)}) {
       if (std::abs(root - LD(ray.tmin)) <= bound || std::abs(root - LD(ray.tmax)) <= bound)
         uncertain[n_uncertain++] = root;
       else if (root > ray.tmin && root < ray.tmax)

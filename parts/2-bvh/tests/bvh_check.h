@@ -1,6 +1,7 @@
 // Test helpers of Part 2: random rays for a scene, and a BVH checked against brute force on them.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <cctype>
 #include <cmath>
@@ -106,19 +107,19 @@ inline std::string describe(const Ray& r) {
 /// Brute force over every primitive, each judged on its own against the ray's interval: the
 /// smallest reported t, the lower index on a tie. (Part 1's BruteForce shrinks tmax as it goes,
 /// which can make it keep a hit an ulp farther than a later one; see compare_with_brute_force.)
-/// To keep 100,000 rays over 30,000 triangles to seconds, a primitive is skipped when the ray
-/// misses its box grown by a part in 10^4, tested in double precision: a test independent of
-/// the BVH's float slab test, and one that cannot miss a point of the primitive.
+/// To keep 100,000 rays over 30,000 triangles to seconds, a primitive is skipped when the part
+/// of the ray inside its interval stays outside a ball around the primitive (its box's bounding
+/// ball, grown by a part in 10^4), measured in double precision: a cull of another shape than a
+/// BVH's box test, and one that cannot miss a point of the primitive.
 class Reference {
  public:
   explicit Reference(const Scene& s) : s_(s) {
     for (uint32_t i = 0, n = s.primitive_count(); i < n; ++i) {
       const Bounds3 b = s.primitive_bounds(i);
-      const glm::dvec3 pad = 1e-4 * glm::dvec3(b.extent()) +
-                             1e-6 * glm::max(glm::abs(glm::dvec3(b.lo)), glm::abs(glm::dvec3(b.hi))) +
-                             glm::dvec3(1e-30);
-      lo_.push_back(glm::dvec3(b.lo) - pad);
-      hi_.push_back(glm::dvec3(b.hi) + pad);
+      const glm::dvec3 lo(b.lo), hi(b.hi);
+      const double scale = std::max(glm::length(lo), glm::length(hi));
+      centre_.push_back(0.5 * (lo + hi));
+      radius_.push_back(0.5 * glm::length(hi - lo) * (1 + 1e-4) + 1e-6 * scale + 1e-30);
     }
   }
   bool intersect(const Ray& r, SurfaceHit* best) const {
@@ -137,23 +138,20 @@ class Reference {
   }
 
  private:
+  // The point of the ray's interval nearest the ball's centre is within the radius.
   bool may_hit(uint32_t i, const Ray& r) const {
-    double t0 = -1e300, t1 = 1e300;
-    for (int a = 0; a < 3; ++a) {
-      const double o = r.o[a], d = r.d[a];
-      if (d == 0.0) {
-        if (o < lo_[i][a] || o > hi_[i][a]) return false;
-        continue;
-      }
-      double tn = (lo_[i][a] - o) / d, tf = (hi_[i][a] - o) / d;
-      if (tn > tf) std::swap(tn, tf);
-      t0 = std::max(t0, tn), t1 = std::min(t1, tf);
-    }
-    return t0 <= t1 && t1 >= double(r.tmin) * (1 - 1e-6) - 1e-30 &&
-           t0 <= double(r.tmax) * (1 + 1e-6) + 1e-30;
+    const glm::dvec3 o(r.o), d(r.d), to_centre = centre_[i] - o;
+    const double dd = glm::dot(d, d);
+    if (!(dd > 0.0)) return true;
+    const double lo = double(r.tmin) * (1 - 1e-6) - 1e-30;
+    const double hi = double(r.tmax) * (1 + 1e-6) + 1e-30;
+    const double t = std::min(std::max(glm::dot(to_centre, d) / dd, lo), hi);
+    const glm::dvec3 gap = to_centre - t * d;
+    return glm::dot(gap, gap) <= radius_[i] * radius_[i];
   }
   const Scene& s_;
-  std::vector<glm::dvec3> lo_, hi_;
+  std::vector<glm::dvec3> centre_;
+  std::vector<double> radius_;
 };
 
 /// Every ray through `bvh` and through brute force: the same hit or miss, bit-identical t and the
