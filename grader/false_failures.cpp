@@ -5,6 +5,8 @@
 #include <fstream>
 #include <iomanip>
 #include <map>
+#include <set>
+#include <tuple>
 #include <sstream>
 #include <stdexcept>
 
@@ -89,31 +91,63 @@ std::vector<SeedRun> run_false_failures(const Manifest& manifest, const GradeOpt
     }
     by_solution[solution] = g;
   }
+  // What the log already holds counts: a run picks up where an earlier one stopped.
+  std::set<std::tuple<std::string, std::string, long>> logged;
+  std::map<std::pair<std::string, std::string>, double> spent;
+  {
+    std::ostringstream quiet;
+    for (const SeedRun& r : read_seed_log(options.log_path, quiet)) {
+      logged.insert({r.solution, r.render, r.seed});
+      spent[{r.solution, r.render}] += r.seconds;
+    }
+  }
   std::ofstream out(options.log_path, std::ios::app);
   if (!out) throw std::runtime_error(options.log_path + ": cannot be written");
-  std::vector<SeedRun> runs;
-  // Seed by seed, every render and solution in turn: a run stopped early has measured every
-  // render about equally often.
-  for (int k = options.first; k < options.first + options.seeds; ++k) {
-    for (const std::string& solution : options.solutions) {
-      for (const PartSpec& part : manifest.parts) {
-        for (RenderCheck check : part.renders) {
-          if (!wanted(check, options)) continue;
-          check.seed = check.seed + uint64_t(k);
-          if (check.seed == check.reference_seed) continue;  // the reference's own numbers
-          CheckResult r = grade_render(manifest, check, by_solution[solution]);
-          if (r.skipped) continue;
-          SeedRun s{solution, check.name, long(check.seed), r.pass, r.seconds,
-                    r.pass ? "" : first_line(r.output)};
-          out << s.solution << '\t' << s.render << '\t' << s.seed << '\t'
-              << (s.pass ? "pass" : "fail") << '\t' << s.seconds << '\t' << s.message << "\n"
-              << std::flush;
-          log << solution << " " << check.name << " seed " << s.seed << ": "
-              << (s.pass ? "pass" : "FAIL: " + s.message) << "\n" << std::flush;
-          runs.push_back(s);
+  // One queue per (solution, render) of its seeds not yet logged. The next render is always the
+  // one that has had the least time so far, so every render gets an equal share of the machine:
+  // a run stopped early has measured the cheap renders most and every render some.
+  struct Queue {
+    std::string solution;
+    RenderCheck check;
+    std::vector<uint64_t> seeds;
+    size_t next = 0;
+  };
+  std::vector<Queue> queues;
+  for (const std::string& solution : options.solutions)
+    for (const PartSpec& part : manifest.parts)
+      for (const RenderCheck& check : part.renders) {
+        if (!wanted(check, options)) continue;
+        Queue q{solution, check, {}, 0};
+        for (int k = options.first; k < options.first + options.seeds; ++k) {
+          uint64_t seed = check.seed + uint64_t(k);
+          if (seed == check.reference_seed) continue;  // the reference's own numbers
+          if (!logged.count({solution, check.name, long(seed)})) q.seeds.push_back(seed);
         }
+        queues.push_back(q);
       }
+  std::vector<SeedRun> runs;
+  for (;;) {
+    Queue* pick = nullptr;
+    for (Queue& q : queues)
+      if (q.next < q.seeds.size() &&
+          (!pick || spent[{q.solution, q.check.name}] < spent[{pick->solution, pick->check.name}]))
+        pick = &q;
+    if (!pick) break;
+    RenderCheck check = pick->check;
+    check.seed = pick->seeds[pick->next++];
+    CheckResult r = grade_render(manifest, check, by_solution[pick->solution]);
+    if (r.skipped) {
+      pick->next = pick->seeds.size();
+      continue;
     }
+    spent[{pick->solution, check.name}] += r.seconds;
+    SeedRun s{pick->solution, check.name, long(check.seed), r.pass, r.seconds,
+              r.pass ? "" : first_line(r.output)};
+    out << s.solution << '\t' << s.render << '\t' << s.seed << '\t' << (s.pass ? "pass" : "fail")
+        << '\t' << s.seconds << '\t' << s.message << "\n" << std::flush;
+    log << s.solution << " " << check.name << " seed " << s.seed << ": "
+        << (s.pass ? "pass" : "FAIL: " + s.message) << "\n" << std::flush;
+    runs.push_back(s);
   }
   return runs;
 }

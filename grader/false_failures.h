@@ -34,8 +34,10 @@ struct FalseFailureOptions {
   int build_jobs = 2;
 };
 
-/// Runs the measurement (appending each seed's result to the log as it finishes, so an
-/// interrupted run keeps what it measured) and returns this run's results.
+/// Runs the measurement, appending each seed's result to the log as it finishes; seeds the log
+/// already holds are not run again, so the same command finishes an interrupted run. The next
+/// render is always the (solution, render) that has had the least time, so each gets an equal
+/// share of the machine. Returns this run's results.
 std::vector<SeedRun> run_false_failures(const Manifest& manifest, const GradeOptions& grade,
                                         const FalseFailureOptions& options, std::ostream& log);
 

@@ -146,11 +146,19 @@ MutantOutcome judge_mutant(const MutantSpec& spec, const std::vector<StepLoss>& 
   o.spec = spec;
   o.losses = losses;
   const StepLoss* own = nullptr;
-  for (const StepLoss& l : losses)
+  // A grader that reports renders by their own names, not under a step (main's before the
+  // rubric by step), leaves them unattributed: listed, but neither "elsewhere" nor its own step.
+  size_t attributed = 0;
+  for (const StepLoss& l : losses) {
     if (l.step == spec.step) own = &l;
-  bool elsewhere = losses.size() > (own ? 1u : 0u);
+    if (std::regex_match(l.step, kStepName)) ++attributed;
+  }
+  bool elsewhere = attributed > (own ? 1u : 0u);
   if (losses.empty()) {
     o.verdict = "PASSES";
+  } else if (!own && attributed == 0) {
+    o.verdict = "RENDERS ONLY";
+    o.message = losses.front().message;
   } else if (!own) {
     o.verdict = "WRONG STEP";
     o.message = losses.front().message;
@@ -221,7 +229,7 @@ std::vector<MutantOutcome> run_mutants(const MutantRunOptions& options, std::ost
         if (results.contains("tests"))
           for (const json& t : results["tests"])
             if (text_of(t, "name") == "part" + std::to_string(spec.part) + ".build" &&
-                text_of(t, "output") != "built")
+                text_of(t, "output").find("built") == std::string::npos)
               build_failed = true;
         o = judge_mutant(spec, step_losses(results));
         if (build_failed) {

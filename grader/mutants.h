@@ -50,7 +50,8 @@ std::vector<StepLoss> step_losses(const nlohmann::json& results);
 
 /// The verdict on a mutant from the steps that lost points: "ok" when only its own step did and
 /// the message matches its hint, "hint?" when only its own step did but the message does not
-/// name the cause, "PASSES" when nothing did, "ALSO ELSEWHERE" / "WRONG STEP" otherwise.
+/// name the cause, "PASSES" when nothing did, "ALSO ELSEWHERE" / "WRONG STEP" otherwise, and
+/// "RENDERS ONLY" when only checks named by no step (renders of a per-check grader) lost.
 MutantOutcome judge_mutant(const MutantSpec& spec, const std::vector<StepLoss>& losses);
 
 /// Options of `grader mutants`.
