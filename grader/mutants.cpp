@@ -9,6 +9,7 @@
 #include <iomanip>
 #include <mutex>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -172,12 +173,14 @@ MutantOutcome judge_mutant(const MutantSpec& spec, const std::vector<StepLoss>& 
 
 std::vector<MutantOutcome> run_mutants(const MutantRunOptions& options, std::ostream& log) {
   std::vector<MutantSpec> all = read_mutant_index(options.index_path);
+  // In the order --only names them (so a run can put one mutant of each part first), each
+  // fragment's matches in the index's order; every mutant once.
   std::vector<MutantSpec> specs;
-  for (const MutantSpec& s : all) {
-    bool wanted = options.only.empty();
-    for (const std::string& o : options.only) wanted = wanted || s.name.find(o) != std::string::npos;
-    if (wanted) specs.push_back(s);
-  }
+  std::set<std::string> taken;
+  if (options.only.empty()) specs = all;
+  for (const std::string& o : options.only)
+    for (const MutantSpec& s : all)
+      if (s.name.find(o) != std::string::npos && taken.insert(s.name).second) specs.push_back(s);
   if (specs.empty()) throw std::runtime_error("no mutant of " + options.index_path + " matches --only");
   fs::path index_dir = fs::path(options.index_path).parent_path();
   fs::path work = fs::absolute(options.work_dir);

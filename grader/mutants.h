@@ -60,7 +60,7 @@ struct MutantRunOptions {
   std::string index_path;     ///< grader/mutants/index.json unless told
   std::string work_dir;       ///< scratch trees and results: BUILD/mutants unless told
   std::string grader_exe;     ///< the grader to run on each copy (this one)
-  std::vector<std::string> only;  ///< names (or name fragments) to run; all when empty
+  std::vector<std::string> only;  ///< names (or fragments) to run, in this order; all when empty
   int jobs = 1;               ///< mutants graded at once, each in its own scratch tree
   int build_jobs = 2;         ///< -j of each build
   bool isolated = true;       ///< pass --isolated when the grader has it
