@@ -1,4 +1,5 @@
-// Part 2, step 3 (traversal): the BVH gives brute force's answers (same t, same primitive, same
+// Part 2, step 3 (traversal): the walk tests few primitives per ray (what a BVH is for), and the
+// BVH gives brute force's answers (same t, same primitive, same
 // occlusion): on inputs that break naive builds and traversals (no primitives, one, all centroids
 // equal, boxes of zero thickness, duplicates); on 100,000 random rays per scene of the project's
 // and the course's; as whole images, pixel for pixel; and as Intel Embree on the course's ray sets.
@@ -16,6 +17,7 @@
 #include "parts/1-raygen/pixel_loop.h"
 #include "parts/2-bvh/tests/bvh_check.h"
 #include "parts/2-bvh/tests/bvh_test_inputs.h"
+#include "parts/2-bvh/tests/traversal_work.h"
 
 namespace pt {
 namespace {
@@ -36,8 +38,13 @@ void PrintTo(const SceneCase& s, std::ostream* os) {
 }
 
 /// The step's tests: the parameterised ones take a SceneCase, the others none (one fixture,
-/// since GoogleTest keeps one fixture class to a test suite).
-class traversal : public testing::TestWithParam<SceneCase> {};
+/// since GoogleTest keeps one fixture class to a test suite). Each first checks that the walk is
+/// one (test::expect_a_traversal): brute force's answers from a scan of every leaf are not a
+/// BVH's.
+class traversal : public testing::TestWithParam<SceneCase> {
+ protected:
+  void SetUp() override { test::expect_a_traversal(); }
+};
 
 /// Checks `scene` against brute force with both split methods and two leaf sizes.
 void expect_brute_force_answers(const Scene& scene, std::vector<Ray> extra = {}) {
@@ -57,6 +64,16 @@ void expect_brute_force_answers(const Scene& scene, std::vector<Ray> extra = {})
       EXPECT_EQ(r.anyhit_vs_nearest, 0u) << r.examples;
       EXPECT_GT(r.hits, 0u);
     }
+}
+
+TEST_F(traversal, tests_few_primitives_per_ray) {
+  // SetUp held both walks to their bounds; the figures, for the record.
+  static const Scene scene = test::scattered_triangles();
+  const Bvh tree(scene, BvhOptions{BvhSplitMethod::sah, 4, 16, {}});
+  const test::TraversalWork w = test::measure_work(tree);
+  std::printf("primitives tested per ray: nearest %.1f, occlusion %.1f (of %zu)\n", w.nearest,
+              w.occluded, scene.triangles.size());
+  EXPECT_GT(w.nearest, 0.0);
 }
 
 TEST_F(traversal, one_primitive_is_one_leaf) {
