@@ -115,7 +115,8 @@ std::vector<SeedRun> run_false_failures(const Manifest& manifest, const GradeOpt
   std::vector<Queue> queues;
   for (const std::string& solution : options.solutions)
     for (const PartSpec& part : manifest.parts)
-      for (const RenderCheck& check : part.renders) {
+      for (const RenderCheck* render : part.renders()) {
+        const RenderCheck& check = *render;
         if (!wanted(check, options)) continue;
         Queue q{solution, check, {}, 0};
         for (int k = options.first; k < options.first + options.seeds; ++k) {
