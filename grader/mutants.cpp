@@ -190,7 +190,9 @@ std::vector<MutantOutcome> run_mutants(const MutantRunOptions& options, std::ost
   const bool isolated = options.isolated && help.output.find("--isolated") != std::string::npos;
   log << "grader mutants: " << specs.size() << " mutants, " << options.jobs
       << " at a time, scratch trees in " << work.string()
-      << (isolated ? ", graded with --isolated" : ", graded without --isolated (this grader has none)")
+      << (isolated ? ", graded with --isolated"
+                  : options.isolated ? ", graded without --isolated (this grader has none)"
+                                     : ", graded without --isolated (--no-isolated)")
       << "\n";
 
   std::vector<MutantOutcome> outcomes(specs.size());

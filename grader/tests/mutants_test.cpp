@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <regex>
 #include <set>
+#include <sstream>
 
 #include <gtest/gtest.h>
 
@@ -143,6 +144,61 @@ TEST(MutantCatalogue, AMalformedIndexIsNamed) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("mutant 1 (x)"), std::string::npos) << e.what();
   }
+}
+
+}  // namespace
+}  // namespace pt::grader
+
+namespace pt::grader {
+namespace {
+
+// The whole run on a tiny project: a catalogue of two patches, a CMake project that configures
+// in a second, and a stand-in grader that takes points from step 1 when the copy's source says
+// "bug" and from step 2 when it says "slow". One mutant is caught in its own step, the other in
+// the wrong one; the source is never changed and the copy is back to it afterwards.
+TEST(MutantRun, AppliesGradesJudgesAndRestoresEachMutant) {
+  test::TempFolder tmp("pt-mutant-run");
+  fs::path src = tmp.path() / "project";
+  tmp.write("project/CMakeLists.txt", "cmake_minimum_required(VERSION 3.16)\nproject(tiny NONE)\n");
+  tmp.write("project/code.txt", "fine\n");
+  ASSERT_EQ(std::system(("cd " + src.string() + " && git init -q && git add CMakeLists.txt code.txt").c_str()), 0);
+  tmp.write("project/grader/mutants/1-bug.patch",
+            "--- a/code.txt\n+++ b/code.txt\n@@ -1 +1 @@\n-fine\n+bug\n");
+  tmp.write("project/grader/mutants/2-slow.patch",
+            "--- a/code.txt\n+++ b/code.txt\n@@ -1 +1 @@\n-fine\n+slow\n");
+  fs::path index = tmp.write("project/grader/mutants/index.json", R"({"mutants": [
+    {"name": "1-bug", "patch": "1-bug.patch", "part": 1, "step": "part1.step1.one", "hint": "bug here"},
+    {"name": "2-slow", "patch": "2-slow.patch", "part": 1, "step": "part1.step1.one", "hint": "slow"}]})");
+  fs::path grader = tmp.write("fake-grader",
+      "#!/bin/sh\n"
+      "[ \"$1\" = --help ] && { echo 'usage'; exit 0; }\n"
+      "while [ $# -gt 0 ]; do case $1 in --source) src=$2;; --json) out=$2;; esac; shift; done\n"
+      "one=3; two=3; msg=ok\n"
+      "grep -q bug \"$src/code.txt\" && { one=0; msg='a bug here'; }\n"
+      "grep -q slow \"$src/code.txt\" && two=1\n"
+      "printf '{\"tests\": [{\"name\": \"part1.step1.one\", \"score\": %s, \"max_score\": 3, \"output\": \"%s\"},"
+      " {\"name\": \"part1.step2.two\", \"score\": %s, \"max_score\": 3, \"output\": \"too slow\"}]}' "
+      "$one \"$msg\" $two > \"$out\"\n"
+      "exit 1\n");
+  fs::permissions(grader, fs::perms::owner_all);
+  MutantRunOptions o;
+  o.source_dir = src.string();
+  o.index_path = index.string();
+  o.work_dir = (tmp.path() / "work").string();
+  o.grader_exe = grader.string();
+  std::ostringstream log;
+  std::vector<MutantOutcome> out = run_mutants(o, log);
+  ASSERT_EQ(out.size(), 2u) << log.str();
+  EXPECT_EQ(out[0].verdict, "ok") << out[0].message << "\n" << log.str();
+  EXPECT_EQ(out[1].verdict, "WRONG STEP") << out[1].message;
+  ASSERT_EQ(out[1].losses.size(), 1u);
+  EXPECT_EQ(out[1].losses[0].step, "part1.step2.two");
+  EXPECT_DOUBLE_EQ(out[1].losses[0].lost, 2.0);
+  EXPECT_EQ(read_text_file(src / "code.txt"), "fine\n");
+  EXPECT_EQ(read_text_file(tmp.path() / "work" / "tree-0" / "code.txt"), "fine\n");
+  std::ostringstream table;
+  print_mutant_table(table, out, 0.0);
+  EXPECT_NE(table.str().find("1 of 2 mutants"), std::string::npos) << table.str();
 }
 
 }  // namespace
