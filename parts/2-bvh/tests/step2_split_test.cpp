@@ -112,7 +112,7 @@ TEST(split, big_and_small_mixed_sah_cost_below_midpoint) {
   EXPECT_TRUE(floor_alone) << "the big triangle was not separated from the small ones at the root";
   // And the answers stay brute force's.
   const test::Comparison r =
-      test::compare_with_brute_force(s, sah, test::random_rays(s, 20000, 5));
+      test::compare_with_brute_force(s, sah, test::random_rays(s, 2000, 5));
   EXPECT_EQ(r.nearest_differ, 0u) << r.examples;
   EXPECT_EQ(r.occluded_differ, 0u) << r.examples;
   EXPECT_GT(r.hits, 0u);
