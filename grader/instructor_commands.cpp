@@ -26,6 +26,8 @@ InstructorCommands::InstructorCommands(CLI::App& app) {
   mutants_->add_option("--work", work_, "scratch trees and results (default BUILD/mutants)");
   mutants_->add_option("--index", index_, "the catalogue (default grader/mutants/index.json)");
   mutants_->add_flag("--no-isolated", no_isolated_, "grade without --isolated");
+  mutants_->add_flag("--report", report_only_,
+                     "grade nothing: print the table from the results an earlier run left");
 
   false_failures_ = app.add_subcommand(
       "false-failures", "instructor: render every graded scene of the complete and the second "
@@ -71,6 +73,7 @@ int InstructorCommands::run(const GradeOptions& grade, const std::string& grader
       o.jobs = jobs_;
       o.build_jobs = build_jobs_;
       o.isolated = !no_isolated_;
+      o.report_only = report_only_;
       std::vector<MutantOutcome> outcomes = run_mutants(o, std::cerr);
       print_mutant_table(std::cout, outcomes, elapsed());
       std::ofstream table(fs::path(o.work_dir) / "table.txt");

@@ -186,6 +186,27 @@ std::vector<MutantOutcome> run_mutants(const MutantRunOptions& options, std::ost
   fs::path work = fs::absolute(options.work_dir);
   fs::create_directories(work / "results");
 
+  if (options.report_only) {
+    // The results an earlier (perhaps interrupted) run left, judged again; a mutant without
+    // any is "not run".
+    std::vector<MutantOutcome> outcomes;
+    for (const MutantSpec& spec : specs) {
+      fs::path json_path = work / "results" / (spec.name + ".json");
+      MutantOutcome o;
+      o.spec = spec;
+      o.verdict = "not run";
+      if (fs::exists(json_path)) {
+        try {
+          o = judge_mutant(spec, step_losses(json::parse(read_text_file(json_path))));
+        } catch (const std::exception& e) {
+          o.verdict = "ERROR";
+          o.message = json_path.string() + ": " + e.what();
+        }
+      }
+      outcomes.push_back(o);
+    }
+    return outcomes;
+  }
   ChildResult help = run_child({options.grader_exe, "--help"}, 60.0);
   const bool isolated = options.isolated && help.output.find("--isolated") != std::string::npos;
   log << "grader mutants: " << specs.size() << " mutants, " << options.jobs

@@ -64,6 +64,7 @@ struct MutantRunOptions {
   int jobs = 1;               ///< mutants graded at once, each in its own scratch tree
   int build_jobs = 2;         ///< -j of each build
   bool isolated = true;       ///< pass --isolated when the grader has it
+  bool report_only = false;   ///< grade nothing: judge the results an earlier run left
 };
 
 /// Runs the catalogue; prints progress to `log` and returns each mutant's outcome in index order.
