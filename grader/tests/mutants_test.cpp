@@ -117,6 +117,11 @@ TEST(MutantVerdict, OwnStepOnlyWithATrueHintIsOk) {
 TEST(MutantVerdict, AnUntrueHintAPassAndAWrongStepAreEachNamed) {
   MutantSpec s = spec("part3.step4.importance", "shadow|leak");
   EXPECT_EQ(judge_mutant(s, step_losses(step_results(4.5, 4, "wrong root?"))).verdict, "hint?");
+  // The mutant's name in a diff image's path is no hint.
+  s.name = "26-shadow-epsilon";
+  s.hint = "shadow";
+  EXPECT_EQ(judge_mutant(s, step_losses(step_results(4.5, 4, "light counted twice? (diff: out/26-shadow-epsilon/x.png)"))).verdict, "hint?");
+  s = spec("part3.step4.importance", "shadow|leak");
   EXPECT_EQ(judge_mutant(s, step_losses(step_results(9, 4, ""))).verdict, "PASSES");
   EXPECT_EQ(judge_mutant(s, step_losses(step_results(9, 2, ""))).verdict, "WRONG STEP");
   EXPECT_EQ(judge_mutant(s, step_losses(step_results(4.5, 2, "leak"))).verdict, "ALSO ELSEWHERE");
