@@ -22,6 +22,12 @@ std::string trimmed(const std::string& line) {
 
 }  // namespace
 
+bool in_solution_only_folder(const fs::path& root, const std::string& rel) {
+  for (fs::path dir = fs::path(rel).parent_path(); !dir.empty(); dir = dir.parent_path())
+    if (fs::exists(root / dir / "SOLUTION-ONLY")) return true;
+  return false;
+}
+
 bool is_solution_only(const std::string& text) {
   std::istringstream in(text);
   std::string line;
@@ -85,6 +91,10 @@ HandoutSummary make_handout(const std::string& source_dir, const std::string& ou
     fs::path from = src / rel;
     if (!fs::is_regular_file(from)) continue;  // deleted in the work tree, or a submodule
     if (rel == "README.md") continue;  // the instructor's: the student's is written below
+    if (in_solution_only_folder(src, rel)) {
+      ++summary.dropped;
+      continue;
+    }
     std::string text = read_text_file(from);
     std::string ext = from.extension().string();
     bool source = ext == ".cpp" || ext == ".h" || ext == ".hpp" || ext == ".cc";

@@ -2,6 +2,7 @@
 // the grader.
 #pragma once
 
+#include <filesystem>
 #include <string>
 
 namespace pt::grader {
@@ -13,6 +14,10 @@ struct HandoutSummary {
 
 /// A file that says "SOLUTION-ONLY FILE" in its first five lines is not handed out.
 bool is_solution_only(const std::string& text);
+
+/// Whether `rel` lies in a folder of `root` (at any depth) that holds a file named
+/// SOLUTION-ONLY: such a folder (the mutant catalogue, the second solution) is not handed out.
+bool in_solution_only_folder(const std::filesystem::path& root, const std::string& rel);
 
 /// Removes every block from a `// BEGIN SOLUTION` line to its `// END SOLUTION` line, the
 /// marker lines included, keeping the stub after it. Throws std::runtime_error naming `path`

@@ -10,6 +10,7 @@
 #include "grader/grade.h"
 #include "grader/handout.h"
 #include "grader/handout_guard.h"
+#include "grader/instructor_commands.h"
 #include "grader/manifest.h"
 #include "grader/report.h"
 
@@ -67,6 +68,7 @@ int main(int argc, char** argv) {
   std::string handout_dir;
   CLI::App* handout = app.add_subcommand("handout", "write the student handout to a new folder");
   handout->add_option("OUT_DIR", handout_dir, "the folder to create")->required();
+  InstructorCommands instructor(app);  // mutants, false-failures, second-solution
   CLI11_PARSE(app, argc, argv);
 
   if (*handout) {
@@ -101,6 +103,8 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (make_reference) return make_references(manifest, part, options) ? 0 : 1;
+  if (instructor.chosen())
+    return instructor.run(options, fs::canonical("/proc/self/exe").string());
   if (!all && part == 0) {
     std::cerr << "grader: say which part (--part N) or --all\n" << app.help();
     return 2;
