@@ -12,6 +12,7 @@
 #include "framework/image/estimate_exr.h"
 #include "framework/image/image.h"
 #include "framework/process/child_process.h"
+#include "framework/stats/variance_consistency.h"
 #include "grader/compare.h"
 
 namespace fs = std::filesystem;
@@ -46,6 +47,17 @@ fs::path scene_path(const RenderCheck& check, const GradeOptions& options) {
   fs::path root = options.source_dir;
   return check.course_scene ? root / ".." / "shared" / "scenes" / "cs184" / check.scene
                             : root / check.scene;
+}
+
+/// The variance check of a render: its own block size, and the sample count its flags ask for
+/// (`-s N`; with `-a`, adaptive, at most N).
+VarianceConsistencyOptions variance_options(const Manifest& manifest, const RenderCheck& check) {
+  VarianceConsistencyOptions o;
+  o.block_size = manifest.block_size;
+  for (size_t i = 0; i + 1 < check.args.size(); ++i)
+    if (check.args[i] == "-s") o.expected_count = std::atoi(check.args[i + 1].c_str());
+  for (const std::string& a : check.args) o.adaptive = o.adaptive || a == "-a" || a == "--adaptive";
+  return o;
 }
 
 CheckResult build_check(int part, const PartSpec& spec, const GradeOptions& options) {
@@ -159,10 +171,25 @@ CheckResult grade_render(const Manifest& manifest, const RenderCheck& check,
   fs::create_directories(options.out_dir);
   fs::path out = fs::absolute(options.out_dir) / (check.name + ".exr");
   fs::remove(out);
+  std::string scratch;
+  if (options.sandbox) {
+    // The render writes only in its scratch folder; the grader reads the file back only if the
+    // render made it there itself (not a link to a reference).
+    scratch = options.sandbox->make_scratch("render");
+    out = fs::path(scratch) / (check.name + ".exr");
+  }
   std::vector<std::string> argv = {options.pathtracer};
   argv.insert(argv.end(), check.args.begin(), check.args.end());
   argv.insert(argv.end(), {"--seed", std::to_string(check.seed), "-f", out.string(), scene.string()});
-  ChildResult c = run_child(argv, check.timeout);
+  ChildResult c = options.sandbox ? run_child(argv, options.sandbox->options(scratch, check.timeout))
+                                  : run_child(argv, check.timeout);
+  struct ScratchCleanup {
+    const Sandbox* sandbox;
+    std::string dir;
+    ~ScratchCleanup() {
+      if (sandbox) sandbox->finish(dir);
+    }
+  } cleanup{options.sandbox, scratch};
   r.seconds = c.seconds;
   std::string todo = not_implemented_lines(c.output);
   if (!c.ok()) {
@@ -171,6 +198,13 @@ CheckResult grade_render(const Manifest& manifest, const RenderCheck& check,
     return r;
   }
   RenderEstimate render, ref;
+  if (options.sandbox) {
+    std::string not_its_own = check_scratch_output(out.string(), *options.sandbox);
+    if (!not_its_own.empty()) {
+      r.output = "the render's output is not used: " + not_its_own;
+      return r;
+    }
+  }
   try {
     render = read_estimate_exr(out.string());
   } catch (const std::exception& e) {
@@ -181,6 +215,12 @@ CheckResult grade_render(const Manifest& manifest, const RenderCheck& check,
     ref = read_estimate_exr(reference.string());
   } catch (const std::exception& e) {
     r.output = std::string("the reference cannot be read: ") + e.what();
+    return r;
+  }
+  VarianceConsistencyResult plausible =
+      check_variance_consistency(render, ref, variance_options(manifest, check));
+  if (!plausible.pass) {
+    r.output = plausible.summary;
     return r;
   }
   BlockTestOptions bt;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "grader/manifest.h"
+#include "grader/sandbox.h"
 
 namespace pt::grader {
 
@@ -28,6 +29,9 @@ struct GradeOptions {
   std::string out_dir = "grader-out";  ///< renders, diff images and JUnit XML go here
   bool build = true;          ///< build the part's targets first
   bool run_tests = true;      ///< run the part's CTest label
+  /// When set, renders run in it (as its user, in a scratch folder, under its limits) and their
+  /// variance is checked against the reference's (the Gradescope bundle); else as the grader.
+  const Sandbox* sandbox = nullptr;
 };
 
 /// Every check of `part`, in the order the table shows them. Never throws for a student's

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace pt::grader {
 
@@ -18,6 +19,10 @@ bool is_solution_only(const std::string& text);
 /// marker lines included, keeping the stub after it. Throws std::runtime_error naming `path`
 /// and the line of a marker without its pair. `blocks` counts the blocks removed.
 std::string strip_solution(const std::string& text, const std::string& path, int* blocks = nullptr);
+
+/// The files git tracks in `source_dir`, relative to it. Throws std::runtime_error when it is
+/// not a git checkout.
+std::vector<std::string> tracked_files(const std::string& source_dir);
 
 /// Copies the files git tracks in `source_dir` to `out_dir` (which must not exist yet or be
 /// empty), stripped as above. Throws std::runtime_error on any problem.
