@@ -53,6 +53,8 @@ cp -a "$SRC/project/parts" "$PT/private/solution/parts"
 launcher=()
 if [ "${PT_CCACHE:-0}" = 1 ] && command -v ccache >/dev/null 2>&1; then
   launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+  # Paths relative to the project in the cache's keys, so another root folder hits the cache.
+  export CCACHE_BASEDIR="$SRC/project" CCACHE_NOHASHDIR=1
 fi
 say "configuring and building the instructor's tree with $JOBS jobs"
 cmake -S "$SRC/project" -B "$PT/build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
