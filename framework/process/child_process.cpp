@@ -152,12 +152,20 @@ int end_every_descendant(long uid, int* reaped_target, pid_t target, int* target
   return reaped;
 }
 
+/// Set when the keeper's parent (the caller) died: the keeper then ends the tree as at a limit.
+volatile sig_atomic_t caller_gone = 0;
+void on_caller_gone(int) { caller_gone = 1; }
+
 /// The keeper: runs in a forked copy of the caller, starts the child, enforces the limits and
 /// ends the whole tree, then writes its KeeperReport to `report_fd` and exits.
 [[noreturn]] void keeper_main(char* const* args, char* const* envp, const ChildOptions& o,
-                              int out_fd, int err_fd, int report_fd) {
+                              int out_fd, int err_fd, int report_fd, pid_t caller) {
   KeeperReport rep;
   prctl(PR_SET_CHILD_SUBREAPER, 1);
+  // A caller that dies (killed, or a test harness stopped) must not leave the tree running.
+  signal(SIGTERM, on_caller_gone);
+  prctl(PR_SET_PDEATHSIG, SIGTERM);
+  if (getppid() != caller) caller_gone = 1;  // it died before the line above
   signal(SIGCHLD, SIG_DFL);
   signal(SIGPIPE, SIG_IGN);
   int exec_pipe[2];
@@ -247,7 +255,7 @@ int end_every_descendant(long uid, int* reaped_target, pid_t target, int* target
       }
       if (done < 0 && errno != EINTR) break;  // no status: reported as unknown
       double elapsed = since(start);
-      if (elapsed > lim.wall_seconds) {
+      if (elapsed > lim.wall_seconds || caller_gone) {
         rep.timed_out = 1;
         break;
       }
@@ -360,6 +368,7 @@ ChildResult run_child(const std::vector<std::string>& argv, const ChildOptions& 
 
   int report[2];
   if (pipe2(report, O_CLOEXEC) != 0) return not_started("cannot create a pipe for the keeper");
+  const pid_t caller = getpid();
   pid_t keeper = fork();
   if (keeper < 0) {
     close(report[0]);
@@ -368,7 +377,8 @@ ChildResult run_child(const std::vector<std::string>& argv, const ChildOptions& 
   }
   if (keeper == 0) {
     close(report[0]);
-    keeper_main(args.data(), envp.data(), options, out.fd, separate ? err.fd : out.fd, report[1]);
+    keeper_main(args.data(), envp.data(), options, out.fd, separate ? err.fd : out.fd, report[1],
+                caller);
   }
   close(report[1]);
   KeeperReport rep;

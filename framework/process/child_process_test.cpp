@@ -4,6 +4,7 @@
 
 #include <signal.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <gtest/gtest.h>
@@ -182,6 +183,30 @@ TEST(FrameworkChildProcess, AKilledKeeperIsAnUnknownStatusAndAFailure) {
   ChildResult r = run_child({"sh", "-c", "kill -9 $PPID; exit 0"}, limited(10.0));
   EXPECT_FALSE(r.ok());
   EXPECT_TRUE(r.unknown_status) << r.describe();
+}
+
+TEST(FrameworkChildProcess, TheTreeEndsWhenTheCallerDies) {
+  // A caller killed in the middle (a grader stopped by its own harness) takes its children's
+  // trees with it: the keeper sees its parent go and ends the tree.
+  test::TempFolder dir("pt-child-caller");
+  std::filesystem::path pid_file = dir.path() / "pid";
+  pid_t caller = fork();
+  if (caller == 0) {
+    run_child({"sh", "-c", "echo $$ > " + pid_file.string() + "; sleep 60"}, limited(120.0));
+    _exit(0);
+  }
+  for (int i = 0; i < 200 && read_pid(pid_file) == 0; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  pid_t child = read_pid(pid_file);
+  ASSERT_GT(child, 0);
+  kill(caller, SIGKILL);
+  waitpid(caller, nullptr, 0);
+  bool gone = false;
+  for (int i = 0; i < 300 && !gone; ++i) {
+    gone = !process_exists(child);
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  EXPECT_TRUE(gone) << "the child " << child << " outlived its caller";
 }
 
 TEST(FrameworkChildProcess, AnotherUserAndItsProcessLimit) {

@@ -45,6 +45,11 @@ class Bundle {
     ChildResult unzip = run_child({"unzip", "-q", zip.string(), "-d", (root_ / "source").string()}, 600);
     ok_ = unzip.ok();
     if (!ok_) return;
+    // The complete solution's student files, as the bundle holds them (setup.sh replaces them
+    // with the stubs in the tree).
+    fs::path project = root_ / "source" / "project";
+    for (const std::string& rel : student_files(project.string()))
+      solution_[rel] = read_text_file(project / rel);
     ChildOptions o;
     o.limits.wall_seconds = 3600;
     o.limits.max_output = 64 << 10;
@@ -60,6 +65,7 @@ class Bundle {
   const std::string& log() const { return log_; }
   double setup_seconds() const { return setup_seconds_; }
   long long zip_bytes() const { return zip_bytes_; }
+  const std::map<std::string, std::string>& solution() const { return solution_; }
 
   /// Grades a submission of the files `files` (relative path -> text) as run_autograder does,
   /// and returns results.json (empty when it is missing or not JSON).
@@ -94,14 +100,8 @@ class Bundle {
   std::string log_;
   double setup_seconds_ = 0.0;
   long long zip_bytes_ = 0;
+  std::map<std::string, std::string> solution_;
 };
-
-std::map<std::string, std::string> solution_files() {
-  std::map<std::string, std::string> files;
-  for (const std::string& rel : student_files(kSource.string()))
-    files[rel] = read_text_file(kSource / rel);
-  return files;
-}
 
 double max_score(const nlohmann::json& results) {
   double m = 0.0;
@@ -127,7 +127,7 @@ TEST(GraderBundle, EndToEndInATemporaryRoot) {
   double seconds = 0.0;
 
   // The complete solution: full marks on every part.
-  nlohmann::json full = bundle.grade(solution_files(), "", &seconds);
+  nlohmann::json full = bundle.grade(bundle.solution(), "", &seconds);
   EXPECT_EQ(validate_gradescope(full), "");
   EXPECT_GT(max_score(full), 0.0);
   EXPECT_DOUBLE_EQ(full.value("score", -1.0), max_score(full)) << outputs(full);
@@ -143,7 +143,7 @@ TEST(GraderBundle, EndToEndInATemporaryRoot) {
               max_score(empty), seconds);
 
   // Part 1 with an honest stub for the sphere: the baseline no cheater may beat.
-  std::map<std::string, std::string> files = solution_files();
+  std::map<std::string, std::string> files = bundle.solution();
   files.erase(kSphereFile);
   files["extra/notes.txt"] = "not graded";
   nlohmann::json stub = bundle.grade(files, "1", &seconds);
@@ -154,7 +154,7 @@ TEST(GraderBundle, EndToEndInATemporaryRoot) {
   std::printf("part 1, sphere left as the stub: %g/%g in %.0f s\n", baseline, max_score(stub), seconds);
 
   // A compile error: a clear result, not a crash.
-  files = solution_files();
+  files = bundle.solution();
   files[kSphereFile] = "this is not C++\n";
   nlohmann::json broken = bundle.grade(files, "1", &seconds);
   EXPECT_EQ(validate_gradescope(broken), "");
@@ -168,7 +168,7 @@ TEST(GraderBundle, EndToEndInATemporaryRoot) {
   // does not compile).
   for (const fs::directory_entry& e : fs::directory_iterator(kSource / "grader/tests/cheaters")) {
     std::string name = e.path().stem().string();
-    files = solution_files();
+    files = bundle.solution();
     files[kSphereFile] = read_text_file(e.path());
     nlohmann::json r = bundle.grade(files, "1", &seconds,
                                     {"PT_AUTOGRADER_MAX_CHECK_SECONDS=5", "PT_AUTOGRADER_DISK_MB=64"});
