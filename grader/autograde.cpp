@@ -169,7 +169,7 @@ AutogradeLayout AutogradeLayout::under(const std::string& root) {
   L.project = L.root / "source" / "project";
   L.submission = L.root / "submission";
   L.results = L.root / "results" / "results.json";
-  L.build = L.root / "pt" / "build";
+  L.build = L.project / "build";
   L.private_dir = L.root / "pt" / "private";
   L.scratch = L.root / "pt" / "scratch";
   return L;

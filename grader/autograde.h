@@ -17,7 +17,9 @@ struct AutogradeLayout {
   std::filesystem::path project;     ///< root/source/project: the instructor's tree
   std::filesystem::path submission;  ///< root/submission: the student's upload
   std::filesystem::path results;     ///< root/results/results.json
-  std::filesystem::path build;       ///< root/pt/build: the build of the instructor's tree
+  /// root/source/project/build: the build of the instructor's tree, where a developer's is, so
+  /// a compiler cache keyed on relative paths serves it (CI)
+  std::filesystem::path build;
   std::filesystem::path private_dir; ///< root/pt/private: what grading trusts (0711, files 0600)
   std::filesystem::path scratch;     ///< root/pt/scratch: the student processes' scratch folders
 

@@ -57,15 +57,18 @@ if [ "${PT_CCACHE:-0}" = 1 ] && command -v ccache >/dev/null 2>&1; then
   export CCACHE_BASEDIR="$SRC/project" CCACHE_NOHASHDIR=1
 fi
 say "configuring and building the instructor's tree with $JOBS jobs"
-cmake -S "$SRC/project" -B "$PT/build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-  -DPT_WITH_EMBREE=OFF -DPT_SOLUTION_DIR="$PT/private/solution" "${launcher[@]}" >/dev/null
+# The build sits where a developer's does (project/build), so a compiler cache keyed on paths
+# relative to the project serves it.
+BUILD="$SRC/project/build"
+cmake -S "$SRC/project" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  -DPT_SOLUTION_DIR="$PT/private/solution" "${launcher[@]}" >/dev/null
 targets=(grader)
 for n in 1 2 3 4 5; do
-  if grep -q "grade_part${n}_isolated" "$PT/build/build.ninja"; then
+  if grep -q "grade_part${n}_isolated" "$BUILD/build.ninja"; then
     targets+=("grade_part${n}_isolated")
   fi
   targets+=("grade_part${n}")
 done
-cmake --build "$PT/build" -j "$JOBS" --target "${targets[@]}"
-"$PT/build/grader/grader" autograde-setup --root "$ROOT"
+cmake --build "$BUILD" -j "$JOBS" --target "${targets[@]}"
+"$BUILD/grader/grader" autograde-setup --root "$ROOT"
 say "done"

@@ -55,7 +55,7 @@ class Bundle {
     o.limits.max_output = 64 << 10;
     o.environment = {"PT_AUTOGRADER_ROOT=" + root_.string(), "PT_SKIP_PACKAGES=1", "PT_JOBS=2",
                      "PT_CCACHE=1"};
-    ChildResult setup = run_child({"nice", "-n", "10", "bash", (root_ / "source" / "setup.sh").string()}, o);
+    ChildResult setup = run_child({"bash", (root_ / "source" / "setup.sh").string()}, o);
     setup_seconds_ = setup.seconds;
     ok_ = setup.ok();
     log_ += setup.output;
@@ -82,7 +82,7 @@ class Bundle {
     o.limits.max_output = 64 << 10;
     o.environment = {"PT_AUTOGRADER_ROOT=" + root_.string(), "PT_AUTOGRADER_PARTS=" + parts};
     o.environment.insert(o.environment.end(), extra_env.begin(), extra_env.end());
-    ChildResult run = run_child({"nice", "-n", "10", "bash", (root_ / "source" / "run_autograder").string()}, o);
+    ChildResult run = run_child({"bash", (root_ / "source" / "run_autograder").string()}, o);
     *seconds = run.seconds;
     EXPECT_TRUE(run.ok()) << run.describe() << "\n" << run.output;
     try {
