@@ -59,16 +59,16 @@ std::vector<std::string> read_lines(const fs::path& path) {
   return lines;
 }
 
-std::vector<TrustedTests> read_trusted(const fs::path& path) {
+std::vector<TrustedTest> read_trusted(const fs::path& path) {
   nlohmann::json j = nlohmann::json::parse(read_text_file(path));
-  std::vector<TrustedTests> all;
+  std::vector<TrustedTest> all;
   for (const nlohmann::json& e : j) {
-    TrustedTests t;
+    TrustedTest t;
+    t.name = e.at("name");
     t.part = e.at("part");
     t.step = e.at("step");
-    t.file = e.at("file");
     t.executable = e.at("executable");
-    t.tests = e.at("tests").get<std::vector<std::string>>();
+    t.gtest = e.at("gtest");
     all.push_back(t);
   }
   return all;
@@ -123,7 +123,7 @@ CheckResult student_build(int part, const AutogradeLayout& L, const Sandbox& san
 /// Part `part`'s tests, each run alone in the sandbox and judged by its sealed report, as one
 /// check worth the part's test points. A skip counts as a failure here: the bundle has every
 /// course scene, so no test of a complete solution skips.
-CheckResult sealed_tests(int part, const PartSpec& spec, const std::vector<TrustedTests>& trusted,
+CheckResult sealed_tests(int part, const PartSpec& spec, const std::vector<TrustedTest>& trusted,
                          const Sandbox& sandbox) {
   CheckResult r;
   r.name = "part" + std::to_string(part) + ".tests";
@@ -132,10 +132,11 @@ CheckResult sealed_tests(int part, const PartSpec& spec, const std::vector<Trust
   int counted = 0, passed = 0;
   std::vector<std::string> failures;
   std::string todo;
-  for (const TrustedTests& t : trusted) {
+  for (const TrustedTest& t : trusted) {
     if (t.part != part) continue;
-    for (const std::string& name : t.tests) {
-      SealedTest s = run_sealed_test(t.executable, name, sandbox, spec.test_timeout);
+    {
+      const std::string& name = t.name;
+      SealedTest s = run_sealed_test(t.executable, t.gtest, sandbox, spec.test_timeout);
       ++counted;
       r.seconds += s.seconds;
       if (s.status == SealedStatus::passed) {
@@ -185,29 +186,29 @@ void give_tree(const fs::path& dir, long uid, long gid) {
   for (const fs::directory_entry& e : fs::recursive_directory_iterator(dir)) give(e.path());
 }
 
-std::vector<TrustedTests> list_part_tests(const fs::path& build_dir) {
-  std::vector<TrustedTests> all;
-  fs::path parts = build_dir / "parts";
-  for (const fs::directory_entry& e : fs::directory_iterator(parts)) {
-    std::string name = e.path().filename().string();
-    int part = 0, step = 0;
-    char rest[200] = {0};
-    // part3_step4_importance_test (the stress tests are not graded)
-    if (std::sscanf(name.c_str(), "part%d_step%d_%199s", &part, &step, rest) != 3) continue;
-    if (name.size() < 5 || name.compare(name.size() - 5, 5, "_test") != 0) continue;
-    if (name.find("_stress_test") != std::string::npos) continue;
-    if (!e.is_regular_file() || access(e.path().c_str(), X_OK) != 0) continue;
-    TrustedTests t;
-    t.part = part;
-    t.step = step;
-    t.file = name.substr(name.find('_') + 1);
-    t.executable = e.path().string();
-    t.tests = list_gtest_tests(t.executable, 60.0);
-    all.push_back(t);
+std::vector<TrustedTest> list_part_tests(const fs::path& build_dir, int part) {
+  std::vector<TrustedTest> all;
+  for (const std::string label : {"part" + std::to_string(part) + "_isolated", "part" + std::to_string(part)}) {
+    ChildResult c = run_child({"ctest", "--test-dir", build_dir.string(), "--show-only=json-v1", "-L",
+                               "^" + label + "$"},
+                              120.0, {}, 64 << 20, ChildStreams::separate);
+    if (!c.ok()) throw std::runtime_error("ctest cannot list the tests of " + build_dir.string() + ": " + c.describe());
+    nlohmann::json j = nlohmann::json::parse(c.output);
+    for (const nlohmann::json& t : j.value("tests", nlohmann::json::array())) {
+      TrustedTest r;
+      r.name = t.value("name", "");
+      if (r.name.rfind("isolated.", 0) == 0) r.name = r.name.substr(9);
+      if (std::sscanf(r.name.c_str(), "part%d.step%d.", &r.part, &r.step) != 2) continue;
+      std::vector<std::string> command = t.value("command", std::vector<std::string>{});
+      if (command.empty()) continue;
+      r.executable = command[0];
+      for (const std::string& arg : command)
+        if (arg.rfind("--gtest_filter=", 0) == 0) r.gtest = arg.substr(15);
+      if (r.gtest.empty()) continue;
+      all.push_back(r);
+    }
+    if (!all.empty()) break;
   }
-  std::sort(all.begin(), all.end(), [](const TrustedTests& a, const TrustedTests& b) {
-    return std::tie(a.part, a.step, a.file) < std::tie(b.part, b.step, b.file);
-  });
   return all;
 }
 
@@ -223,9 +224,11 @@ void autograde_setup(const std::string& root, const std::string& grader_exe) {
     write_file(L.stubs() / f, strip_solution(read_text_file(L.project / f), f), fs::perms(0644));
   // The test list of the complete solution, before any student code is built.
   nlohmann::json tests = nlohmann::json::array();
-  for (const TrustedTests& t : list_part_tests(L.build))
-    tests.push_back({{"part", t.part}, {"step", t.step}, {"file", t.file},
-                     {"executable", t.executable}, {"tests", t.tests}});
+  Manifest manifest = read_manifest((L.project / "reference" / "manifest.json").string());
+  for (const PartSpec& spec : manifest.parts)
+    for (const TrustedTest& t : list_part_tests(L.build, spec.part))
+      tests.push_back({{"name", t.name}, {"part", t.part}, {"step", t.step},
+                       {"executable", t.executable}, {"gtest", t.gtest}});
   write_file(L.test_list(), tests.dump(1) + "\n", fs::perms(0600));
   fs::copy_file(grader_exe, L.grader(), fs::copy_options::overwrite_existing);
   fs::permissions(L.grader(), fs::perms(0700));
@@ -254,7 +257,7 @@ void autograde_setup(const std::string& root, const std::string& grader_exe) {
   fs::create_directories(L.scratch);
   fs::permissions(L.scratch, fs::perms(0711));
   std::cerr << "autograde-setup: " << files.size() << " student files, " << tests.size()
-            << " test executables listed, private folder " << L.private_dir << "\n";
+            << " tests listed, private folder " << L.private_dir << "\n";
 }
 
 int autograde(const std::string& root, const std::vector<int>& parts,
@@ -270,7 +273,7 @@ int autograde(const std::string& root, const std::vector<int>& parts,
     sandbox.max_check_seconds = tuning.max_check_seconds;
     if (tuning.disk_bytes > 0) sandbox.limits.disk_bytes = tuning.disk_bytes;
     Manifest manifest = read_manifest((L.project / "reference" / "manifest.json").string());
-    std::vector<TrustedTests> trusted = read_trusted(L.test_list());
+    std::vector<TrustedTest> trusted = read_trusted(L.test_list());
     GradeOptions options;
     options.source_dir = L.project.string();
     options.build_dir = L.build.string();

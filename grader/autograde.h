@@ -31,17 +31,19 @@ struct AutogradeLayout {
   std::filesystem::path test_list() const { return private_dir / "tests.json"; }
 };
 
-/// One test executable of a part and its tests, as the complete solution lists them.
-struct TrustedTests {
+/// One test of a part as the complete solution's build registers it.
+struct TrustedTest {
+  std::string name;        ///< partN.stepK.suite.test (CTest's name, "isolated." removed)
   int part = 0, step = 0;
-  std::string file;        ///< "step4_importance_test"
-  std::string executable;  ///< its path in the build tree
-  std::vector<std::string> tests;  ///< GoogleTest names, Suite.Name
+  std::string executable;  ///< its GoogleTest program in the build tree
+  std::string gtest;       ///< its GoogleTest name, Suite.Name
 };
 
-/// The part tests of a build tree (not the stress ones), listed by running each executable: only
-/// on the complete solution's build, which runs no student code.
-std::vector<TrustedTests> list_part_tests(const std::filesystem::path& build_dir);
+/// The graded tests of part `part` in a build tree (label partN_isolated where the build has
+/// isolated targets, else partN; never the stress ones), from CTest's own list of the tests and
+/// their commands. Only on the complete solution's build, before any student code is built: a
+/// student's code runs at the discovery of its tests and could list anything.
+std::vector<TrustedTest> list_part_tests(const std::filesystem::path& build_dir, int part);
 
 /// After the instructor's tree is built: writes the student-file list, the stubs, the trusted
 /// test list and a copy of `grader_exe` to the private folder, puts the stubs in place of the

@@ -120,6 +120,7 @@ std::string outputs(const nlohmann::json& results) {
 
 TEST(GraderBundle, EndToEndInATemporaryRoot) {
   if (geteuid() != 0) GTEST_SKIP() << "the bundle runs as root (as on Gradescope)";
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);  // each case's line as it ends, not at the end
   Bundle bundle;
   ASSERT_TRUE(bundle.ok()) << bundle.log();
   std::printf("bundle: %.1f MB, setup.sh %.0f s\n", bundle.zip_bytes() / 1048576.0,
@@ -163,13 +164,28 @@ TEST(GraderBundle, EndToEndInATemporaryRoot) {
   std::printf("part 1, compile error: %g/%g in %.0f s\n", broken.value("score", -1.0),
               max_score(broken), seconds);
 
-  // The cheaters: each replaces the sphere; none may score more than the stub did, and every
-  // other check of the part is still graded (the same score as the stub, but for the one that
-  // does not compile).
+  // The cheaters: each replaces one student file (the sphere's unless its first lines say
+  // "replaces FILE"); none may score more than that file's honest stub, and every other check
+  // of the part is still graded (the same score as the stub, but for the one that does not
+  // compile).
+  std::map<std::string, double> baselines = {{kSphereFile, baseline}};
   for (const fs::directory_entry& e : fs::directory_iterator(kSource / "grader/tests/cheaters")) {
     std::string name = e.path().stem().string();
+    std::string text = read_text_file(e.path());
+    std::string target = kSphereFile;
+    size_t at = text.substr(0, 400).find("replaces ");
+    if (at != std::string::npos) target = text.substr(at + 9, text.find_first_of("):\n", at) - at - 9);
+    if (!baselines.count(target)) {
+      files = bundle.solution();
+      files.erase(target);
+      nlohmann::json honest = bundle.grade(files, "1", &seconds);
+      baselines[target] = honest.value("score", -1.0);
+      std::printf("part 1, %s left as the stub: %g/%g in %.0f s\n", target.c_str(),
+                  baselines[target], max_score(honest), seconds);
+    }
+    baseline = baselines[target];
     files = bundle.solution();
-    files[kSphereFile] = read_text_file(e.path());
+    files[target] = text;
     nlohmann::json r = bundle.grade(files, "1", &seconds,
                                     {"PT_AUTOGRADER_MAX_CHECK_SECONDS=5", "PT_AUTOGRADER_DISK_MB=64"});
     double score = r.value("score", -1.0);
