@@ -103,7 +103,7 @@ TEST_F(CliTest, HelpListsTheCourseFlagsAndExitsZero) {
   for (const char* flag : {"--samples", "--light-samples", "--threads", "--max-depth", "--resolution",
                            "--file", "--hemisphere", "--adaptive", "--env", "--aperture",
                            "--focal-distance", "--cell", "--info", "--seed", "--bvh", "--bvh-width", "--leaf-size",
-                           "--normals"})
+                           "--normals", "--integrator"})
     EXPECT_NE(run.out.find(flag), std::string::npos) << flag << " missing from:\n" << run.out;
 }
 
@@ -139,6 +139,10 @@ TEST_F(CliTest, BadInputIsNamedAndNeverACrash) {
       {"-f a.jpg " + s, 2, "a.jpg"},
       {"-f a " + s, 2, "extension"},
       {"-e " + quote(file("missing.exr")) + " -f a.png " + s, 1, "missing.exr"},
+      {"--integrator photon -f a.png " + s, 2, "--integrator"},
+      {"--integrator direct -m 3 -f a.png " + s, 2, "-m 3"},   // direct light stops at -m 1
+      {"--integrator direct --mis -f a.png " + s, 2, "--mis"},  // MIS is Part 4's
+      {"--normals --integrator path -f a.png " + s, 2, "--normals"},
   };
   for (const Case& c : cases) {
     Outcome run = pathtracer(c.args);

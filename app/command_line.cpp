@@ -138,6 +138,12 @@ int parse_command_line(int argc, char** argv, CommandLine* command, std::ostream
                      "-wide BVH built from it (the same hits, faster)")
       ->check(CLI::IsMember({2, kWideBvhWidth}))->capture_default_str();
   app.add_flag("--normals", normals, "Show shading normals (n * 0.5 + 0.5) instead of light");
+  std::string integrator = "auto";
+  app.add_option("--integrator", integrator,
+                 "What answers a camera ray: normals (as --normals), direct (Part 3's direct light "
+                 "alone, -m 0 or 1, no Part 4 code), path (Part 4's paths at any -m), auto "
+                 "(normals with --normals, direct for -m 0 or 1 without --mis, path otherwise)")
+      ->check(CLI::IsMember({"auto", "normals", "direct", "path"}))->capture_default_str();
   app.add_flag("--mis", s.mis, "Combine light and BSDF samples by multiple importance sampling");
   bool no_rr = false;
   app.add_flag("--no-rr", no_rr, "No Russian roulette: every path runs to the maximum depth");
@@ -172,7 +178,19 @@ int parse_command_line(int argc, char** argv, CommandLine* command, std::ostream
     s.accel = bvh == "median" ? AccelKind::bvh_median
               : bvh == "none" ? AccelKind::brute_force
                               : AccelKind::bvh_sah;
-    if (normals) s.shading = ShadingMode::normals;
+    if (normals && integrator != "auto" && integrator != "normals")
+      throw UsageError("--normals and --integrator " + integrator + " ask for different images");
+    if (normals || integrator == "normals") s.shading = ShadingMode::normals;
+    if (integrator == "direct") {
+      s.integrator = IntegratorChoice::direct;
+      if (s.max_depth > 1)
+        throw UsageError("--integrator direct is direct light alone: -m 0 or -m 1 (got -m " +
+                         std::to_string(s.max_depth) + "; paths are --integrator path)");
+      if (s.mis)
+        throw UsageError("--integrator direct has no --mis (multiple importance sampling is "
+                         "Part 4's: --integrator path)");
+    }
+    if (integrator == "path") s.integrator = IntegratorChoice::path;
     if (no_rr) s.russian_roulette = false;
     check_settings(c, resolution, cell, adaptive, app.count("--focal-distance") > 0);
     if (c.resolution_given) check_cell(s);

@@ -36,4 +36,9 @@ function(pt_add_part index dir)
 
   set_property(GLOBAL PROPERTY PT_TOP_LAYER ${top})
   set_property(GLOBAL APPEND PROPERTY PT_PARTS ${index})
+  # What the grader's isolated builds (cmake/PtIsolated.cmake) put together again.
+  set_property(GLOBAL PROPERTY PT_PART${index}_DIR ${dir})
+  if(EXISTS ${pipeline_dir})
+    set_property(GLOBAL PROPERTY PT_PART${index}_PIPELINE pt_pipeline${index})
+  endif()
 endfunction()

@@ -29,8 +29,14 @@ function(pt_add_library_in)
   if(NOT srcs)
     message(FATAL_ERROR "${A_DIR}: no sources for the library ${A_NAME}")
   endif()
-  add_library(${A_NAME} STATIC ${srcs})
-  pt_lto_objects(${A_NAME})
+  # The objects are a target of their own (NAME_obj), so that the grader's isolated builds
+  # (cmake/PtParts.cmake) can put the same objects into another chain of layers without
+  # compiling them again; compile options of the library go on NAME_obj.
+  add_library(${A_NAME}_obj OBJECT ${srcs})
+  pt_lto_objects(${A_NAME}_obj)
+  target_include_directories(${A_NAME}_obj PUBLIC ${PROJECT_SOURCE_DIR})
+  target_link_libraries(${A_NAME}_obj PUBLIC ${A_LIBS})
+  add_library(${A_NAME} STATIC $<TARGET_OBJECTS:${A_NAME}_obj>)
   target_include_directories(${A_NAME} PUBLIC ${PROJECT_SOURCE_DIR})
   target_link_libraries(${A_NAME} PUBLIC ${A_LIBS})
 endfunction()
@@ -76,20 +82,33 @@ function(pt_add_test)
   endif()
 endfunction()
 
-# pt_add_tests_in(DIR dir LABEL label LIBS lib ... [EXCLUDE regex ...] [STEPS] [OUT var])
+# pt_add_tests_in(DIR dir LABEL label LIBS lib ... [EXCLUDE regex ...] [STEPS] [OUT var]
+#                 [TARGET_PREFIX t] [TEST_PREFIX p] [NO_STRESS])
 # Every *_test.cpp under dir becomes a test executable of its own, labelled `label`;
-# *_stress_test.cpp is also labelled `stress`; *_exact_test.cpp is linked with CGAL (and only it,
-# since CGAL costs seconds per file to compile). EXCLUDE leaves out a subfolder that builds its
-# own tests against other libraries. STEPS: the folder is a part's tests/, one file a step,
-# stepK_NAME_test.cpp (a step's CGAL and long checks in stepK_NAME_exact_test.cpp and
+# *_stress_test.cpp is labelled `stress` and `label_stress` instead (the long, exhaustive
+# comparisons: the instructor's CI runs them, a grade does not); *_exact_test.cpp is linked with
+# CGAL (and only it, since CGAL costs seconds per file to compile). EXCLUDE leaves out a subfolder
+# that builds its own tests against other libraries. STEPS: the folder is a part's tests/, one
+# file a step, stepK_NAME_test.cpp (a step's CGAL and long checks in stepK_NAME_exact_test.cpp and
 # stepK_NAME_stress_test.cpp), registered as `label.stepK.NAME.test_name`; a file not named so
-# is an error. OUT names a variable that receives the targets made.
+# is an error. OUT names a variable that receives the targets made. TARGET_PREFIX (default the
+# label) starts each executable's name, TEST_PREFIX (default the label) each step test's name;
+# NO_STRESS leaves the stress files out (the grader's isolated builds, cmake/PtIsolated.cmake).
 function(pt_add_tests_in)
-  cmake_parse_arguments(A "STEPS" "DIR;LABEL;OUT" "LIBS;EXCLUDE" ${ARGN})
+  cmake_parse_arguments(A "STEPS;NO_STRESS" "DIR;LABEL;OUT;TARGET_PREFIX;TEST_PREFIX" "LIBS;EXCLUDE" ${ARGN})
+  if(NOT A_TARGET_PREFIX)
+    set(A_TARGET_PREFIX ${A_LABEL})
+  endif()
+  if(NOT A_TEST_PREFIX)
+    set(A_TEST_PREFIX ${A_LABEL})
+  endif()
   file(GLOB_RECURSE tests CONFIGURE_DEPENDS ${A_DIR}/*_test.cpp)
   foreach(regex ${A_EXCLUDE})
     list(FILTER tests EXCLUDE REGEX "${regex}")
   endforeach()
+  if(A_NO_STRESS)
+    list(FILTER tests EXCLUDE REGEX "_stress_test\\.cpp$")
+  endif()
   set(made "")
   foreach(src ${tests})
     get_filename_component(stem ${src} NAME_WE)
@@ -97,7 +116,7 @@ function(pt_add_tests_in)
     set(extra "")
     set(prefix "")
     if(stem MATCHES "_stress_test$")
-      list(APPEND labels stress)
+      set(labels stress ${A_LABEL}_stress)
     endif()
     if(stem MATCHES "_exact")
       set(extra CGAL)
@@ -107,11 +126,11 @@ function(pt_add_tests_in)
         message(FATAL_ERROR "${src}: a part's test file is named stepK_NAME_test.cpp "
                             "(stepK_NAME_exact_test.cpp, stepK_NAME_stress_test.cpp), after the step it checks")
       endif()
-      set(prefix "${A_LABEL}.step${CMAKE_MATCH_1}.")
+      set(prefix "${A_TEST_PREFIX}.step${CMAKE_MATCH_1}.")
     endif()
-    pt_add_test(NAME ${A_LABEL}_${stem} SOURCES ${src} LABELS ${labels} LIBS ${A_LIBS} ${extra}
+    pt_add_test(NAME ${A_TARGET_PREFIX}_${stem} SOURCES ${src} LABELS ${labels} LIBS ${A_LIBS} ${extra}
       PREFIX "${prefix}")
-    list(APPEND made ${A_LABEL}_${stem})
+    list(APPEND made ${A_TARGET_PREFIX}_${stem})
   endforeach()
   if(A_OUT)
     set(${A_OUT} ${made} PARENT_SCOPE)

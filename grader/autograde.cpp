@@ -93,11 +93,15 @@ std::string excerpt(const std::string& output, size_t lines = 15) {
 /// code cannot read at build time what the grader protects (an #include or .incbin of a
 /// reference or of the solution fails). The tree is the student user's while it builds, the
 /// grader's (read-only to that user, files 0600, programs 0711) afterwards.
-CheckResult student_build(int part, const AutogradeLayout& L, const Sandbox& sandbox,
-                          double timeout) {
-  CheckResult r;
-  r.name = "part" + std::to_string(part) + ".build";
-  r.part = part;
+/// Whether the student's build of a part succeeded, and its error excerpt when not.
+struct BuildOutcome {
+  bool ok = false;
+  std::string output;
+};
+
+BuildOutcome student_build(int part, const AutogradeLayout& L, const Sandbox& sandbox,
+                           double timeout) {
+  BuildOutcome r;
   std::string target = "grade_part" + std::to_string(part);
   if (read_text_file(L.build / "build.ninja").find(target + "_isolated") != std::string::npos)
     target += "_isolated";
@@ -113,52 +117,13 @@ CheckResult student_build(int part, const AutogradeLayout& L, const Sandbox& san
   give_tree(L.build, 0, 0);
   set_modes(L.build, fs::perms(0711), fs::perms(0600), fs::perms(0711));
   sandbox.finish(scratch);
-  r.seconds = c.seconds;
-  r.pass = c.ok();
-  r.output = r.pass ? "built" : "your code did not build (the build " + c.describe() + "):\n" +
-                                    excerpt(c.output);
-  return r;
-}
-
-/// Part `part`'s tests, each run alone in the sandbox and judged by its sealed report, as one
-/// check worth the part's test points. A skip counts as a failure here: the bundle has every
-/// course scene, so no test of a complete solution skips.
-CheckResult sealed_tests(int part, const PartSpec& spec, const std::vector<TrustedTest>& trusted,
-                         const Sandbox& sandbox) {
-  CheckResult r;
-  r.name = "part" + std::to_string(part) + ".tests";
-  r.part = part;
-  r.max_score = spec.test_points;
-  int counted = 0, passed = 0;
-  std::vector<std::string> failures;
-  std::string todo;
-  for (const TrustedTest& t : trusted) {
-    if (t.part != part) continue;
-    {
-      const std::string& name = t.name;
-      SealedTest s = run_sealed_test(t.executable, t.gtest, sandbox, spec.test_timeout);
-      ++counted;
-      r.seconds += s.seconds;
-      if (s.status == SealedStatus::passed) {
-        ++passed;
-      } else {
-        std::string why = s.status == SealedStatus::skipped ? "skipped (counted as failed)" : s.why;
-        failures.push_back(name + ": " + why);
-      }
-      todo += not_implemented_lines(s.output);
-    }
+  r.ok = c.ok();
+  if (!r.ok) {
+    // Paths as the student knows them: relative to the project.
+    std::string text = excerpt(c.output), prefix = L.project.string() + "/";
+    for (size_t at; (at = text.find(prefix)) != std::string::npos;) text.erase(at, prefix.size());
+    r.output = "your code did not build (the build " + c.describe() + "):\n" + text;
   }
-  if (counted == 0) {
-    r.output = "no tests of part " + std::to_string(part) + " are listed";
-    return r;
-  }
-  r.score = r.max_score * passed / counted;
-  r.pass = passed == counted;
-  r.output = std::to_string(passed) + " of " + std::to_string(counted) + " tests passed";
-  for (size_t i = 0; i < failures.size() && i < 20; ++i) r.output += "\n    failed: " + failures[i];
-  if (failures.size() > 20) r.output += "\n    ... and " + std::to_string(failures.size() - 20) + " more";
-  std::string lines = not_implemented_lines(todo);
-  if (!lines.empty()) r.output += "\n" + lines;
   return r;
 }
 
@@ -280,52 +245,53 @@ int autograde(const std::string& root, const std::vector<int>& parts,
     options.manifest_path = (L.project / "reference" / "manifest.json").string();
     options.pathtracer = (L.build / "app" / "pathtracer").string();
     options.out_dir = (L.private_dir / "out").string();
-    options.build = false;
-    options.run_tests = false;
+    options.build = false;  // built below, as the student's user
+    options.isolated = true;
+    options.isolated_separate = true;
     options.sandbox = &sandbox;
-    std::vector<CheckResult> all;
+    options.trusted = &trusted;
+    std::vector<PartResult> all;
     for (const PartSpec& spec : manifest.parts) {
       if (!parts.empty() && std::find(parts.begin(), parts.end(), spec.part) == parts.end())
         continue;
       std::cerr << "autograde: part " << spec.part << ": building\n";
-      CheckResult built = student_build(spec.part, L, sandbox, spec.build_timeout);
-      std::vector<CheckResult> part_results;
-      if (built.pass) {
-        std::cerr << "autograde: part " << spec.part << ": tests\n";
-        part_results.push_back(sealed_tests(spec.part, spec, trusted, sandbox));
-        std::cerr << "autograde: part " << spec.part << ": renders\n";
-        for (const CheckResult& r : grade_part(manifest, spec.part, options))
-          part_results.push_back(r);
+      BuildOutcome built = student_build(spec.part, L, sandbox, spec.build_timeout);
+      if (built.ok) {
+        std::cerr << "autograde: part " << spec.part << ": grading\n";
+        all.push_back(grade_part(manifest, spec.part, options));
       } else {
-        CheckResult t;
-        t.name = "part" + std::to_string(spec.part) + ".tests";
-        t.part = spec.part;
-        t.max_score = spec.test_points;
-        part_results.push_back(t);
-        for (const RenderCheck& c : spec.renders) {
-          CheckResult r;
-          r.name = c.name;
-          r.part = spec.part;
-          r.max_score = c.points;
-          part_results.push_back(r);
+        PartResult r;
+        r.part = spec.part;
+        r.built = false;
+        r.build_output = built.output;
+        for (const StepSpec& st : spec.steps) {
+          StepResult step;
+          step.part = spec.part;
+          step.step = st.step;
+          step.name = st.full_name();
+          step.max_score = st.points;
+          step.message = "not graded: " + built.output;
+          r.steps.push_back(step);
         }
-        for (CheckResult& r : part_results) r.output = built.output;
+        all.push_back(r);
       }
-      all.insert(all.end(), part_results.begin(), part_results.end());
     }
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    results = gradescope_results(all, seconds);
+    RunInfo info;
+    info.isolated = true;
+    info.seconds = seconds;
+    results = gradescope_results(all, info);
     std::string protection =
         sandbox.protects()
             ? "Your code ran as an unprivileged user of its own, with limits."
             : "UNPROTECTED: the grader did not run as root, so your code ran as the grader's own "
               "user (a developer's run, not an official grade).";
-    results["output"] = intake.summary() + "\n" + protection;
-    results["extra_data"] = {{"protected", sandbox.protects()},
-                             {"taken", intake.taken},
-                             {"missing", intake.missing},
-                             {"refused", intake.refused}};
+    results["output"] = results["output"].get<std::string>() + "\n" + intake.summary() + "\n" + protection;
+    results["extra_data"]["protected"] = sandbox.protects();
+    results["extra_data"]["taken"] = intake.taken;
+    results["extra_data"]["missing"] = intake.missing;
+    results["extra_data"]["refused"] = intake.refused;
   } catch (const std::exception& e) {
     results = {{"score", 0},
                {"output", std::string("The autograder could not grade this submission: ") +

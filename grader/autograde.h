@@ -31,14 +31,6 @@ struct AutogradeLayout {
   std::filesystem::path test_list() const { return private_dir / "tests.json"; }
 };
 
-/// One test of a part as the complete solution's build registers it.
-struct TrustedTest {
-  std::string name;        ///< partN.stepK.suite.test (CTest's name, "isolated." removed)
-  int part = 0, step = 0;
-  std::string executable;  ///< its GoogleTest program in the build tree
-  std::string gtest;       ///< its GoogleTest name, Suite.Name
-};
-
 /// The graded tests of part `part` in a build tree (label partN_isolated where the build has
 /// isolated targets, else partN; never the stress ones), from CTest's own list of the tests and
 /// their commands. Only on the complete solution's build, before any student code is built: a

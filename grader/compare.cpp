@@ -46,13 +46,32 @@ const KnownFactor kFactors[] = {
 
 }  // namespace
 
-std::string diagnose(const BlockTestResult& result) {
+std::string diagnose(const BlockTestResult& result, const std::string& kind) {
   if (result.pass) return "";
   if (result.nonfinite) {
-    return "a NaN or infinite pixel: look for a division by a zero pdf or cosine, or a "
-           "normalize() of a zero vector.";
+    return kind == "normals"
+               ? "a NaN or infinite pixel: a normal of zero length normalized (a degenerate "
+                 "triangle, or barycentric weights that do not sum to one)?"
+               : "a NaN or infinite pixel: look for a division by a zero pdf or cosine, or a "
+                 "normalize() of a zero vector.";
   }
   if (result.failing.empty()) return "";
+  if (kind == "normals") {
+    // The normals view has no light: what differs is which surface a ray hits and its normal.
+    double overall = (result.overall_ratio.x + result.overall_ratio.y + result.overall_ratio.z) / 3.0;
+    if (std::isfinite(overall) && overall < 0.02)
+      return "the image is (almost) black: no camera ray hits anything. Is this step implemented "
+             "yet (see the \"not implemented\" lines), and do the camera rays point into the scene?";
+    char buf[400];
+    std::snprintf(buf, sizeof buf,
+                  "the surfaces seen differ from the reference's in %zu of %d blocks (a normals "
+                  "image: no lighting involved). Compare the diff image with the scene: a flipped "
+                  "or shifted image (camera ray, pixel offset), the far root of a sphere, hits "
+                  "outside [min_t, max_t], or a face normal where the vertex normals should be "
+                  "interpolated?",
+                  result.failing.size(), result.blocks);
+    return buf;
+  }
   std::vector<double> ratios;
   int darker = 0, brighter = 0;
   for (const BlockDifference& b : result.failing) {
@@ -112,6 +131,39 @@ std::string diagnose(const BlockTestResult& result) {
          "scene (wrong normals, a flipped direction, or light leaking through surfaces?).";
 }
 
+double noise_ratio(const RenderEstimate& render, const RenderEstimate& reference) {
+  if (render.variance.size() != reference.variance.size() || reference.variance.empty()) return NAN;
+  double a = 0.0, b = 0.0;
+  for (size_t i = 0; i < render.variance.size(); ++i) {
+    a += double(render.variance[i].x) + render.variance[i].y + render.variance[i].z;
+    b += double(reference.variance[i].x) + reference.variance[i].y + reference.variance[i].z;
+  }
+  return b > 0.0 ? a / b : NAN;
+}
+
+std::string check_noise(const RenderEstimate& render, const RenderEstimate& reference, double limit) {
+  const double r = noise_ratio(render, reference);
+  if (!std::isfinite(r)) return "";
+  char buf[400];
+  if (r > limit) {
+    std::snprintf(buf, sizeof buf,
+                  "the mean matches, but each sample is %.2f times as noisy as the reference's at "
+                  "the same settings (at most %.2f): fewer samples taken than asked for? Is -l "
+                  "(samples per area light) honoured, and are they averaged?",
+                  r, limit);
+    return buf;
+  }
+  if (r < 1.0 / limit) {
+    std::snprintf(buf, sizeof buf,
+                  "the mean matches, but each sample is only %.2f times as noisy as the "
+                  "reference's at the same settings (at least %.2f): more samples taken than "
+                  "asked for (a point light sampled -l times?), or samples that are not independent?",
+                  r, 1.0 / limit);
+    return buf;
+  }
+  return "";
+}
+
 void write_diff_image(const std::string& path, const RenderEstimate& render,
                       const RenderEstimate& reference, const BlockTestResult& result,
                       int block_size) {
@@ -144,13 +196,14 @@ void write_diff_image(const std::string& path, const RenderEstimate& render,
 }
 
 Comparison compare_render(const RenderEstimate& render, const RenderEstimate& reference,
-                          const BlockTestOptions& options, const std::string& diff_path) {
+                          const BlockTestOptions& options, const std::string& kind,
+                          const std::string& diff_path) {
   Comparison c;
   c.test = block_t_test(render, reference, options);
   c.pass = c.test.pass;
   c.message = c.test.summary;
   if (c.pass) return c;
-  std::string hint = diagnose(c.test);
+  std::string hint = diagnose(c.test, kind);
   if (!hint.empty()) c.message += ": " + hint;
   if (!diff_path.empty() && reference.width > 0 && reference.height > 0) {
     try {

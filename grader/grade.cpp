@@ -1,6 +1,9 @@
 #include "grader/grade.h"
 
+#include <cctype>
+#include <chrono>
 #include <cmath>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -60,71 +63,212 @@ VarianceConsistencyOptions variance_options(const Manifest& manifest, const Rend
   return o;
 }
 
-CheckResult build_check(int part, const PartSpec& spec, const GradeOptions& options) {
-  CheckResult r;
-  r.name = "part" + std::to_string(part) + ".build";
-  r.part = part;
-  ChildResult c = run_child({"cmake", "--build", options.build_dir, "--target",
-                             "grade_part" + std::to_string(part), "-j2"},
-                            spec.build_timeout);
-  r.seconds = c.seconds;
-  r.pass = c.ok();
-  r.output = r.pass ? "built" : "the build " + c.describe() + ":\n" + output_excerpt(c.output);
+/// The first failure a GoogleTest output reports (the file:line line and what follows), short.
+std::string first_failure(const std::string& output) {
+  std::istringstream in(output);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  for (size_t i = 0; i < lines.size(); ++i) {
+    if (lines[i].find("Failure") == std::string::npos &&
+        lines[i].find("error:") == std::string::npos)
+      continue;
+    std::string s;
+    for (size_t k = i; k < lines.size() && k < i + 6; ++k) {
+      if (k > i && lines[k].rfind("[  ", 0) == 0) break;  // the next gtest status line
+      s += (s.empty() ? "" : "\n") + lines[k];
+    }
+    return s;
+  }
+  return "";
+}
+
+/// The project's relative name for a path the compiler wrote absolutely.
+std::string relative_to(const std::string& text, const std::string& root) {
+  std::string r = text, prefix = fs::weakly_canonical(root).string() + "/";
+  for (size_t at; (at = r.find(prefix)) != std::string::npos;) r.erase(at, prefix.size());
   return r;
 }
 
-CheckResult test_check(int part, const PartSpec& spec, const GradeOptions& options) {
-  CheckResult r;
-  r.name = "part" + std::to_string(part) + ".tests";
-  r.part = part;
-  r.max_score = spec.test_points;
+/// The step a test's name names ("part3.step4.importance.x" or "isolated.part3.step4..."), or 0.
+int step_of(const std::string& test, int part) {
+  std::string name = test.rfind("isolated.", 0) == 0 ? test.substr(9) : test;
+  std::string prefix = "part" + std::to_string(part) + ".step";
+  if (name.rfind(prefix, 0) != 0) return 0;
+  size_t at = prefix.size(), end = at;
+  while (end < name.size() && std::isdigit(static_cast<unsigned char>(name[end]))) ++end;
+  if (end == at || end >= name.size() || name[end] != '.') return 0;
+  return std::stoi(name.substr(at, end - at));
+}
+
+std::string part_target(int part, const GradeOptions& options) {
+  return "grade_part" + std::to_string(part) + (options.isolated ? "_isolated" : "");
+}
+
+std::string part_label(int part, const GradeOptions& options) {
+  return "^part" + std::to_string(part) + (options.isolated && options.isolated_separate ? "_isolated" : "") + "$";
+}
+
+std::string pathtracer_for(int part, const GradeOptions& options) {
+  if (!(options.isolated && options.isolated_separate)) return options.pathtracer;
+  return (fs::path(options.pathtracer).parent_path() /
+          ("pathtracer_isolated" + std::to_string(part))).string();
+}
+
+/// Runs part N's step tests through CTest (each its own process and time limit) and returns
+/// one check per test, in the order CTest reports them.
+/// Part N's trusted tests, each alone in the sandbox, judged by its sealed report (never by an
+/// exit code or printed lines). A skip is a failure here: the bundle has every course scene, so
+/// no test of the complete solution skips, and a skip must not shrink the denominator.
+std::vector<CheckResult> run_sealed_tests(int part, const PartSpec& spec,
+                                          const GradeOptions& options) {
+  std::vector<CheckResult> checks;
+  for (const TrustedTest& t : *options.trusted) {
+    if (t.part != part) continue;
+    SealedTest s = run_sealed_test(t.executable, t.gtest, *options.sandbox, spec.test_timeout);
+    CheckResult r;
+    r.kind = "test";
+    r.name = t.name;
+    r.seconds = s.seconds;
+    r.pass = s.status == SealedStatus::passed;
+    if (s.status == SealedStatus::skipped) {
+      r.output = "skipped, which counts as a failure here";
+    } else if (!r.pass) {
+      std::string f = first_failure(s.output);
+      r.output = relative_to(s.why == "failed" && !f.empty() ? f : s.why, options.source_dir);
+      std::string todo = not_implemented_lines(s.output);
+      if (!todo.empty()) r.output += "\n" + todo;
+    }
+    checks.push_back(r);
+  }
+  return checks;
+}
+
+std::vector<CheckResult> run_tests(int part, const PartSpec& spec, const GradeOptions& options,
+                                   std::string* problem) {
+  if (options.sandbox && options.trusted) return run_sealed_tests(part, spec, options);
+  std::vector<CheckResult> checks;
   fs::path junit = fs::absolute(options.out_dir) / ("part" + std::to_string(part) + "-tests.xml");
   fs::remove(junit);
   char timeout[32];
   std::snprintf(timeout, sizeof timeout, "%g", spec.test_timeout);
-  // Each test is its own process with its own time limit (ctest's); the whole run has one too,
-  // so that even a wedged ctest cannot stop the grader.
-  ChildResult c = run_child({"ctest", "--test-dir", options.build_dir, "-L",
-                             "^part" + std::to_string(part) + "$", "--timeout", timeout,
-                             "--output-on-failure", "--output-junit", junit.string(), "-j2"},
+  // The whole run has a time limit too, so that even a wedged ctest cannot stop the grader.
+  ChildResult c = run_child({"ctest", "--test-dir", options.build_dir, "-L", part_label(part, options),
+                             "--timeout", timeout, "--output-junit", junit.string(), "-j2"},
                             spec.build_timeout);
-  r.seconds = c.seconds;
   pugi::xml_document doc;
-  int total = 0, failed = 0, skipped = 0;
-  std::vector<std::string> failures;
-  if (doc.load_file(junit.c_str())) {
-    for (pugi::xpath_node n : doc.select_nodes("//testcase")) {
-      pugi::xml_node t = n.node();
-      ++total;
-      std::string status = t.attribute("status").as_string();
-      if (t.child("skipped") || status == "disabled" || status == "notrun") {
-        ++skipped;
-      } else if (t.child("failure") || t.child("error") || status == "fail") {
-        ++failed;
-        failures.push_back(t.attribute("name").as_string());
-      }
-    }
-  }
-  int counted = total - skipped;
-  if (counted <= 0) {
-    r.output = "no tests of part " + std::to_string(part) + " ran (ctest " + c.describe() +
+  if (!doc.load_file(junit.c_str())) {
+    *problem = "the tests of part " + std::to_string(part) + " did not run (ctest " + c.describe() +
                ")\n" + output_excerpt(c.output, 6);
-    return r;
+    return checks;
   }
-  r.score = r.max_score * double(counted - failed) / counted;
-  r.pass = failed == 0;
-  r.output = std::to_string(counted - failed) + " of " + std::to_string(counted) +
-             " tests passed";
-  if (skipped) r.output += " (" + std::to_string(skipped) + " skipped)";
-  r.output += "; JUnit XML: " + junit.string();
-  for (size_t i = 0; i < failures.size() && i < 20; ++i) r.output += "\n    failed: " + failures[i];
-  if (failures.size() > 20) r.output += "\n    ... and " + std::to_string(failures.size() - 20) + " more";
-  std::string todo = not_implemented_lines(c.output);
-  if (!todo.empty()) r.output += "\n" + todo;
-  return r;
+  for (pugi::xpath_node n : doc.select_nodes("//testcase")) {
+    pugi::xml_node t = n.node();
+    CheckResult r;
+    r.kind = "test";
+    r.name = t.attribute("name").as_string();
+    if (r.name.rfind("isolated.", 0) == 0) r.name = r.name.substr(9);
+    r.seconds = t.attribute("time").as_double();
+    std::string status = t.attribute("status").as_string();
+    std::string out = t.child("system-out").text().as_string();
+    r.skipped = t.child("skipped") || status == "disabled" || status == "notrun";
+    r.pass = !r.skipped && !t.child("failure") && !t.child("error") && status != "fail";
+    if (r.skipped) {
+      r.output = "skipped";
+      std::string why = first_failure(out);
+      if (out.find("SKIPPED") != std::string::npos) r.output = "skipped (GTEST_SKIP)";
+    } else if (!r.pass) {
+      std::string f = first_failure(out);
+      std::string message = t.child("failure").attribute("message").as_string();
+      if (f.empty()) {
+        f = message.empty() ? "failed" : message;
+        if (out.find("Timeout") != std::string::npos || message.find("Timeout") != std::string::npos)
+          f = "timed out (" + std::string(timeout) + " s): an endless loop, or far too slow?";
+        else if (out.find("SEGFAULT") != std::string::npos || message.find("SEGFAULT") != std::string::npos ||
+                 out.find("Exception") != std::string::npos)
+          f = "crashed (" + (message.empty() ? std::string("signal") : message) + ")";
+      }
+      r.output = relative_to(f, options.source_dir);
+      std::string todo = not_implemented_lines(out);
+      if (!todo.empty()) r.output += "\n" + todo;
+    }
+    checks.push_back(r);
+  }
+  return checks;
 }
 
 }  // namespace
+
+int StepResult::counted() const {
+  int n = 0;
+  for (const CheckResult& c : checks) n += c.skipped ? 0 : 1;
+  return n;
+}
+
+int StepResult::failed() const {
+  int n = 0;
+  for (const CheckResult& c : checks) n += (!c.skipped && !c.pass) ? 1 : 0;
+  return n;
+}
+
+double PartResult::score() const {
+  double s = 0.0;
+  for (const StepResult& r : steps) s += r.score;
+  return s;
+}
+
+double PartResult::max_score() const {
+  double s = 0.0;
+  for (const StepResult& r : steps) s += r.max_score;
+  return s;
+}
+
+int PartResult::failing_steps() const {
+  int n = 0;
+  for (const StepResult& r : steps) n += r.passed() ? 0 : 1;
+  return n;
+}
+
+StepResult score_step(const StepSpec& spec, std::vector<CheckResult> checks) {
+  StepResult r;
+  r.part = spec.part;
+  r.step = spec.step;
+  r.name = spec.full_name();
+  r.max_score = spec.points;
+  r.checks = std::move(checks);
+  const int counted = r.counted(), failed = r.failed();
+  if (counted == 0) {
+    r.message = r.checks.empty() ? "no check of this step ran (none was built or registered)"
+                                 : "every check of this step was skipped: nothing to score";
+    return r;
+  }
+  r.score = spec.points * double(counted - failed) / double(counted);
+  std::set<std::string> todo_seen;
+  std::string todo;
+  for (const CheckResult& c : r.checks) {
+    std::istringstream in(c.output);
+    for (std::string line; std::getline(in, line);)
+      if (line.find("not implemented") != std::string::npos) {
+        size_t start = line.find_first_not_of(' ');
+        std::string l = start == std::string::npos ? line : line.substr(start);
+        if (todo_seen.insert(l).second && todo_seen.size() <= 4) todo += "\n" + l;
+      }
+  }
+  for (const CheckResult& c : r.checks) {
+    if (c.skipped || c.pass) continue;
+    std::string first = c.output;
+    size_t cut = first.find("\n    ");  // the not-implemented lines come once, below
+    std::string head = first.substr(0, cut);
+    r.message = c.name + ": " + head;
+    break;
+  }
+  if (failed > 0) {
+    r.message += "\n" + std::to_string(failed) + " of " + std::to_string(counted) +
+                 " checks failed" + todo;
+  } else {
+    r.message = "all " + std::to_string(counted) + " checks pass";
+  }
+  return r;
+}
 
 std::string not_implemented_lines(const std::string& output) {
   std::set<std::string> seen;
@@ -141,12 +285,11 @@ CheckResult grade_render(const Manifest& manifest, const RenderCheck& check,
                          const GradeOptions& options) {
   CheckResult r;
   r.name = check.name;
-  r.part = check.part;
-  r.max_score = check.points;
+  r.kind = "render";
+  r.seed = uint64_t(int64_t(check.seed) + options.seed_offset);
   fs::path scene = scene_path(check, options);
   if (check.course_scene && !fs::exists(scene)) {
     r.skipped = true;
-    r.max_score = 0;
     r.output = "skipped: the course scene " + scene.string() + " is not there";
     return r;
   }
@@ -178,9 +321,9 @@ CheckResult grade_render(const Manifest& manifest, const RenderCheck& check,
     scratch = options.sandbox->make_scratch("render");
     out = fs::path(scratch) / (check.name + ".exr");
   }
-  std::vector<std::string> argv = {options.pathtracer};
+  std::vector<std::string> argv = {pathtracer_for(check.part, options)};
   argv.insert(argv.end(), check.args.begin(), check.args.end());
-  argv.insert(argv.end(), {"--seed", std::to_string(check.seed), "-f", out.string(), scene.string()});
+  argv.insert(argv.end(), {"--seed", std::to_string(r.seed), "-f", out.string(), scene.string()});
   ChildResult c = options.sandbox ? run_child(argv, options.sandbox->options(scratch, check.timeout))
                                   : run_child(argv, check.timeout);
   struct ScratchCleanup {
@@ -226,68 +369,179 @@ CheckResult grade_render(const Manifest& manifest, const RenderCheck& check,
   BlockTestOptions bt;
   bt.block_size = manifest.block_size;
   bt.alpha = manifest.alpha;
-  Comparison cmp =
-      compare_render(render, ref, bt, (fs::absolute(options.out_dir) / (check.name + "_diff.png")).string());
+  bt.relative_tolerance =
+      check.relative_tolerance >= 0.0 ? check.relative_tolerance : manifest.relative_tolerance;
+  bt.absolute_tolerance = manifest.absolute_tolerance;
+  Comparison cmp = compare_render(render, ref, bt, check.kind,
+                                  (fs::absolute(options.out_dir) / (check.name + "_diff.png")).string());
   r.pass = cmp.pass;
-  r.score = cmp.pass ? check.points : 0.0;
   r.output = cmp.message;
+  if (r.pass && check.noise_limit > 0.0) {
+    std::string noise = check_noise(render, ref, check.noise_limit);
+    if (!noise.empty()) {
+      r.pass = false;
+      r.output = noise;
+    }
+  }
   if (!todo.empty()) r.output += "\n" + todo;
   return r;
 }
 
-std::vector<CheckResult> grade_part(const Manifest& manifest, int part,
-                                    const GradeOptions& options) {
-  std::vector<CheckResult> results;
+PartResult grade_part(const Manifest& manifest, int part, const GradeOptions& options) {
+  auto start = std::chrono::steady_clock::now();
+  PartResult result;
+  result.part = part;
   const PartSpec* spec = manifest.find_part(part);
   if (!spec) {
-    CheckResult r;
-    r.name = "part" + std::to_string(part);
-    r.part = part;
-    r.output = "the manifest has no part " + std::to_string(part);
-    results.push_back(r);
-    return results;
+    result.built = false;
+    result.build_output = "the manifest has no part " + std::to_string(part);
+    return result;
   }
   fs::create_directories(options.out_dir);
-  bool built = true;
+  result.rests_on = rests_on_line(manifest, part, options);
   if (options.build) {
-    results.push_back(build_check(part, *spec, options));
-    built = results.back().pass;
+    ChildResult c = run_child({"cmake", "--build", options.build_dir, "--target",
+                               part_target(part, options), "-j2"},
+                              spec->build_timeout);
+    result.built = c.ok();
+    if (!result.built)
+      result.build_output = "part " + std::to_string(part) + " does not build (" + c.describe() +
+                            "):\n" + relative_to(output_excerpt(c.output), options.source_dir);
   }
-  auto not_built = [&](CheckResult r) {
-    r.output = "not graded: part " + std::to_string(part) + " did not build (see part" +
-               std::to_string(part) + ".build)";
-    return r;
-  };
+  if (!result.built) {
+    for (const StepSpec& st : spec->steps) {
+      StepResult r;
+      r.part = part;
+      r.step = st.step;
+      r.name = st.full_name();
+      r.max_score = st.points;
+      r.message = "not graded: " + result.build_output;
+      result.steps.push_back(r);
+    }
+    return result;
+  }
+  std::vector<std::vector<CheckResult>> by_step(spec->steps.size() + 1);
+  std::string test_problem;
   if (options.run_tests) {
-    if (built) {
-      results.push_back(test_check(part, *spec, options));
-    } else {
-      CheckResult r;
-      r.name = "part" + std::to_string(part) + ".tests";
-      r.part = part;
-      r.max_score = spec->test_points;
-      results.push_back(not_built(r));
+    for (CheckResult& c : run_tests(part, *spec, options, &test_problem)) {
+      int k = step_of(c.name, part);
+      if (k >= 1 && k <= int(spec->steps.size()))
+        by_step[size_t(k)].push_back(std::move(c));
+      else
+        result.unassigned.push_back(c.name);
     }
   }
-  for (const RenderCheck& check : spec->renders) {
-    if (built) {
-      results.push_back(grade_render(manifest, check, options));
-    } else {
-      CheckResult r;
-      r.name = check.name;
-      r.part = part;
-      r.max_score = check.points;
-      results.push_back(not_built(r));
-    }
+  for (const StepSpec& st : spec->steps) {
+    for (const RenderCheck& check : st.renders)
+      by_step[size_t(st.step)].push_back(grade_render(manifest, check, options));
+    StepResult r = score_step(st, std::move(by_step[size_t(st.step)]));
+    if (!test_problem.empty() && r.counted() == 0) r.message = test_problem;
+    result.steps.push_back(std::move(r));
   }
-  return results;
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+namespace {
+
+/// The newest modification time of a part's files, as seconds since the epoch.
+double newest_file_time(const fs::path& folder) {
+  double newest = 0.0;
+  std::error_code ec;
+  if (!fs::exists(folder, ec)) return newest;
+  for (const auto& e : fs::recursive_directory_iterator(folder, ec)) {
+    if (!e.is_regular_file(ec)) continue;
+    auto t = fs::last_write_time(e.path(), ec);
+    if (ec) continue;
+    auto sys = std::chrono::time_point_cast<std::chrono::seconds>(
+        t - fs::file_time_type::clock::now() + std::chrono::system_clock::now());
+    newest = std::max(newest, double(sys.time_since_epoch().count()));
+  }
+  return newest;
+}
+
+fs::path part_folder(int part, const GradeOptions& options) {
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(fs::path(options.source_dir) / "parts", ec))
+    if (e.is_directory() && e.path().filename().string().rfind(std::to_string(part) + "-", 0) == 0)
+      return e.path();
+  return {};
+}
+
+std::string clock_time(double epoch) {
+  std::time_t t = std::time_t(epoch);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%H:%M", std::localtime(&t));
+  return buf;
+}
+
+nlohmann::json read_state(const GradeOptions& options) {
+  std::ifstream in(fs::path(options.out_dir) / "state.json");
+  nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  return j.is_object() ? j : nlohmann::json::object();
+}
+
+}  // namespace
+
+std::string rests_on_line(const Manifest& manifest, int part, const GradeOptions& options) {
+  const PartSpec* spec = manifest.find_part(part);
+  if (!spec || spec->renders_rest_on.empty()) return "";
+  std::string parts;
+  for (size_t i = 0; i < spec->renders_rest_on.size(); ++i) {
+    parts += (i == 0 ? "" : i + 1 == spec->renders_rest_on.size() ? " and " : ", ");
+    parts += "Part " + std::to_string(spec->renders_rest_on[i]);
+  }
+  const std::string head = "Part " + std::to_string(part) + "'s renders trace rays with ";
+  if (options.isolated)
+    return head + "the complete solution of " + parts + " (--isolated): only Part " +
+           std::to_string(part) + "'s code is graded.";
+  nlohmann::json state = read_state(options);
+  std::string line = head + "your " + parts + ":";
+  for (size_t i = 0; i < spec->renders_rest_on.size(); ++i) {
+    int k = spec->renders_rest_on[i];
+    std::string key = std::to_string(k);
+    line += i == 0 ? " " : ", ";
+    if (!state.contains(key) || !state[key].is_object()) {
+      line += "Part " + key + " not graded yet (grader --part " + key + ")";
+      continue;
+    }
+    const nlohmann::json& s = state[key];
+    double when = s.value("time", 0.0);
+    int failing = s.value("failing_steps", -1);
+    bool built = s.value("built", true);
+    line += "Part " + key;
+    if (!built) line += " did not build";
+    else if (failing == 0) line += " passed";
+    else line += " has " + std::to_string(failing) + " failing step" + (failing == 1 ? "" : "s");
+    line += " (" + clock_time(when);
+    if (s.value("isolated", false)) line += ", isolated";
+    fs::path folder = part_folder(k, options);
+    if (!folder.empty() && newest_file_time(folder) > when) line += ", changed since";
+    line += ")";
+  }
+  return line + ".";
+}
+
+void record_state(const PartResult& result, const GradeOptions& options) {
+  nlohmann::json state = read_state(options);
+  double now = double(std::chrono::duration_cast<std::chrono::seconds>(
+                          std::chrono::system_clock::now().time_since_epoch()).count());
+  state[std::to_string(result.part)] = {{"time", now},
+                                        {"built", result.built},
+                                        {"failing_steps", result.failing_steps()},
+                                        {"score", result.score()},
+                                        {"max_score", result.max_score()},
+                                        {"isolated", options.isolated}};
+  fs::create_directories(options.out_dir);
+  std::ofstream(fs::path(options.out_dir) / "state.json") << state.dump(2) << "\n";
 }
 
 bool make_references(const Manifest& manifest, int part, const GradeOptions& options) {
   bool ok = true;
   for (const PartSpec& p : manifest.parts) {
     if (part != 0 && p.part != part) continue;
-    for (const RenderCheck& check : p.renders) {
+    for (const RenderCheck* checkp : p.renders()) {
+      const RenderCheck& check = *checkp;
       fs::path scene = scene_path(check, options);
       if (check.course_scene && !fs::exists(scene)) {
         std::cerr << check.name << ": skipped, the course scene " << scene << " is not there\n";

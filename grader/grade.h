@@ -1,4 +1,5 @@
-// Grading one part: build it, run its tests, render its scenes and compare them with references.
+// Grading one part step by step: build it, run its step tests, render its scenes and compare
+// them with references, and score each step on its own checks.
 #pragma once
 
 #include <string>
@@ -9,15 +10,41 @@
 
 namespace pt::grader {
 
-/// The outcome of one check, as the score table and the Gradescope results show it.
+/// The outcome of one check (a test or a render) of a step.
 struct CheckResult {
-  std::string name;
-  int part = 0;
-  double score = 0.0, max_score = 0.0;
+  std::string name;       ///< partN.stepK.suite.test or partN.stepK.render.SCENE
+  std::string kind;       ///< "test" or "render"
   bool pass = false;
-  bool skipped = false;   ///< not counted (a course scene that is not there)
+  bool skipped = false;   ///< not counted (a course scene that is not there, GTEST_SKIP)
   std::string output;     ///< what a student reads: what failed and what to look at
   double seconds = 0.0;
+  uint64_t seed = 0;      ///< of a render
+};
+
+/// One step's score: its points shared equally among its counted checks.
+struct StepResult {
+  int part = 0, step = 0;
+  std::string name;       ///< partN.stepK.NAME
+  double score = 0.0, max_score = 0.0;
+  std::vector<CheckResult> checks;
+  std::string message;    ///< the first failing check and its message, or why nothing counted
+  bool passed() const { return score >= max_score && counted() > 0; }
+  int counted() const;
+  int failed() const;
+};
+
+/// One part's grade: whether it built, and its steps in order.
+struct PartResult {
+  int part = 0;
+  bool built = true;
+  std::string build_output;   ///< the build's error excerpt when it failed
+  std::string rests_on;       ///< the one line on the earlier parts its renders run ("" if none)
+  std::vector<StepResult> steps;
+  std::vector<std::string> unassigned;  ///< tests whose name names no step of the manifest
+  double seconds = 0.0;
+  double score() const;
+  double max_score() const;
+  int failing_steps() const;
 };
 
 /// Where things are and what to do.
@@ -25,22 +52,41 @@ struct GradeOptions {
   std::string source_dir;     ///< the project (scenes and references are relative to it)
   std::string build_dir;      ///< a configured CMake build tree of it
   std::string manifest_path;  ///< reference/manifest.json unless told otherwise
-  std::string pathtracer;     ///< the renderer to run
-  std::string out_dir = "grader-out";  ///< renders, diff images and JUnit XML go here
+  std::string pathtracer;     ///< the renderer to run (the isolated one is found beside it)
+  std::string out_dir = "grader-out";  ///< renders, diff images, JUnit XML, state.json go here
   bool build = true;          ///< build the part's targets first
-  bool run_tests = true;      ///< run the part's CTest label
-  /// When set, renders run in it (as its user, in a scratch folder, under its limits) and their
-  /// variance is checked against the reference's (the Gradescope bundle); else as the grader.
+  bool run_tests = true;      ///< run the part's step tests
+  /// Link every other part's complete solution (the build's grade_partN_isolated): only part
+  /// N's code is graded. `isolated_separate` says the solution is a copy apart from this tree
+  /// (PT_SOLUTION_DIR); otherwise this tree is the solution and the ordinary targets are it.
+  bool isolated = false;
+  bool isolated_separate = false;
+  int64_t seed_offset = 0;    ///< every graded render uses seed + seed_offset
+  /// When set (the Gradescope bundle), the student's code runs in it: each test of `trusted`
+  /// alone, judged by its sealed report (grader/sandbox.h), and each render as its user in a
+  /// scratch folder, compared only if its variance is plausible. Else as the grader, by CTest.
   const Sandbox* sandbox = nullptr;
+  const std::vector<TrustedTest>* trusted = nullptr;
 };
 
-/// Every check of `part`, in the order the table shows them. Never throws for a student's
-/// failure: a crash, a hang or garbage is that check's failure.
-std::vector<CheckResult> grade_part(const Manifest& manifest, int part, const GradeOptions& options);
+/// Every step of `part`. Never throws for a student's failure: a crash, a hang or garbage is
+/// that check's failure.
+PartResult grade_part(const Manifest& manifest, int part, const GradeOptions& options);
 
 /// Renders one check as the grader does and compares it with its reference.
 CheckResult grade_render(const Manifest& manifest, const RenderCheck& check,
                          const GradeOptions& options);
+
+/// Scores a step from its checks: points shared among the counted ones, the first failure's
+/// message, and the "not implemented" lines of its stubs.
+StepResult score_step(const StepSpec& spec, std::vector<CheckResult> checks);
+
+/// The one line saying what part `part`'s renders rest on and the state of those parts when
+/// they were last graded (OUT/state.json), or "" when they rest on nothing.
+std::string rests_on_line(const Manifest& manifest, int part, const GradeOptions& options);
+
+/// Records `result` in OUT/state.json for the next rests_on_line.
+void record_state(const PartResult& result, const GradeOptions& options);
 
 /// Renders the references of `part` (every part when 0) with the complete solution and records
 /// in the manifest how each was made. Returns false (having said why on stderr) on a failure.

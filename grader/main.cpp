@@ -18,6 +18,22 @@
 namespace fs = std::filesystem;
 using namespace pt::grader;
 
+namespace {
+
+/// Whether `dir` holds the complete solution: its parts' files still have their solution blocks.
+bool holds_solution(const fs::path& dir) {
+  std::error_code ec;
+  for (const auto& e : fs::recursive_directory_iterator(dir / "parts", ec)) {
+    if (!e.is_regular_file(ec) || e.path().extension() != ".cpp") continue;
+    std::ifstream in(e.path());
+    for (std::string line; std::getline(in, line);)
+      if (line.find("// BEGIN SOLUTION") != std::string::npos) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   CLI::App app{"Grades the path tracer one part at a time against the reference images."};
   GradeOptions options;
@@ -26,6 +42,8 @@ int main(int argc, char** argv) {
   options.pathtracer = GRADER_PATHTRACER;
   int part = 0;
   bool all = false, make_reference = false, no_tests = false, no_build = false;
+  std::string solution_dir = GRADER_SOLUTION_DIR;
+  options.isolated_separate = GRADER_ISOLATED_SEPARATE;
   std::string json_path;
   app.add_option("--part", part, "grade part N (1-5): build it, run its tests, compare renders")
       ->check(CLI::Range(1, 5));
@@ -41,7 +59,13 @@ int main(int argc, char** argv) {
   app.add_option("--out", options.out_dir, "where renders, diff images and JUnit XML go")
       ->capture_default_str();
   app.add_flag("--no-build", no_build, "do not build first");
-  app.add_flag("--no-tests", no_tests, "skip the CTest label, grade the renders only");
+  app.add_flag("--no-tests", no_tests, "skip the step tests, grade the renders only");
+  app.add_flag("--isolated", options.isolated,
+               "grade part N alone: its code linked with the complete solution of every other "
+               "part (the build's grade_partN_isolated), so that no other part costs it points");
+  app.add_option("--seed-offset", options.seed_offset,
+                 "render with seed + K instead of the manifest's seeds (a false-failure study)")
+      ->capture_default_str();
   std::string handout_dir;
   CLI::App* handout = app.add_subcommand("handout", "write the student handout to a new folder");
   handout->add_option("OUT_DIR", handout_dir, "the folder to create")->required();
@@ -122,13 +146,30 @@ int main(int argc, char** argv) {
     std::cerr << "grader: say which part (--part N) or --all\n" << app.help();
     return 2;
   }
+  if (options.isolated && !holds_solution(solution_dir)) {
+    std::cerr << "grader: --isolated links the complete solution of the other parts, and "
+              << solution_dir << " holds none (a handout). Configure the build with "
+              << "-DPT_SOLUTION_DIR=<a copy of the complete solution>.\n";
+    return 2;
+  }
+  for (const PartSpec& p : manifest.parts) {
+    for (const RenderCheck* r : p.renders()) {
+      int64_t seed = int64_t(r->seed) + options.seed_offset;
+      if (seed < 0 || uint64_t(seed) == r->reference_seed) {
+        std::cerr << "grader: --seed-offset " << options.seed_offset << " gives " << r->name
+                  << " the seed " << seed << ", "
+                  << (seed < 0 ? "below 0" : "its reference's own: the same random numbers") << "\n";
+        return 2;
+      }
+    }
+  }
   auto start = std::chrono::steady_clock::now();
-  std::vector<CheckResult> results;
+  std::vector<PartResult> results;
   for (const PartSpec& p : manifest.parts) {
     if (!all && p.part != part) continue;
-    std::cerr << "grading part " << p.part << " ...\n";
-    std::vector<CheckResult> r = grade_part(manifest, p.part, options);
-    results.insert(results.end(), r.begin(), r.end());
+    std::cerr << "grading part " << p.part << (options.isolated ? " (isolated)" : "") << " ...\n";
+    results.push_back(grade_part(manifest, p.part, options));
+    record_state(results.back(), options);
   }
   if (results.empty()) {
     std::cerr << "grader: the manifest " << options.manifest_path << " has no part " << part << "\n";
@@ -139,7 +180,11 @@ int main(int argc, char** argv) {
   print_score_table(std::cout, results);
   if (!json_path.empty()) {
     std::ofstream out(json_path);
-    out << gradescope_results(results, seconds).dump(2) << "\n";
+    RunInfo info;
+    info.isolated = options.isolated;
+    info.seed_offset = options.seed_offset;
+    info.seconds = seconds;
+    out << gradescope_results(results, info).dump(2) << "\n";
     if (!out) {
       std::cerr << "grader: cannot write " << json_path << "\n";
       return 2;

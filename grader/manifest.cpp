@@ -1,5 +1,6 @@
 #include "grader/manifest.h"
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -33,9 +34,43 @@ T optional(const nlohmann::ordered_json& j, const char* key, T fallback) {
 
 }  // namespace
 
+std::string StepSpec::full_name() const {
+  return "part" + std::to_string(part) + ".step" + std::to_string(step) + "." + name;
+}
+
+std::string StepSpec::test_prefix() const {
+  return "part" + std::to_string(part) + ".step" + std::to_string(step) + ".";
+}
+
+const StepSpec* PartSpec::find_step(int step) const {
+  for (const StepSpec& s : steps)
+    if (s.step == step) return &s;
+  return nullptr;
+}
+
+std::vector<const RenderCheck*> PartSpec::renders() const {
+  std::vector<const RenderCheck*> all;
+  for (const StepSpec& s : steps)
+    for (const RenderCheck& r : s.renders) all.push_back(&r);
+  return all;
+}
+
+double PartSpec::points() const {
+  double sum = 0.0;
+  for (const StepSpec& s : steps) sum += s.points;
+  return sum;
+}
+
 const PartSpec* Manifest::find_part(int part) const {
   for (const PartSpec& p : parts)
     if (p.part == part) return &p;
+  return nullptr;
+}
+
+const RenderCheck* Manifest::find_render(const std::string& name) const {
+  for (const PartSpec& p : parts)
+    for (const RenderCheck* r : p.renders())
+      if (r->name == name) return r;
   return nullptr;
 }
 
@@ -51,34 +86,75 @@ Manifest read_manifest(const std::string& path) {
   try {
     m.block_size = optional(m.json, "block_size", 16);
     m.alpha = optional(m.json, "alpha", 0.01);
+    m.relative_tolerance = optional(m.json, "relative_tolerance", 1e-5);
+    m.absolute_tolerance = optional(m.json, "absolute_tolerance", 1e-6);
+    m.stopping_rule = optional(m.json, "stopping_rule", std::string("split"));
     if (m.block_size < 1 || !(m.alpha > 0 && m.alpha < 1))
       bad(path, "top level", "block_size must be >= 1 and alpha in (0, 1)");
+    if (!(m.relative_tolerance >= 0.0) || !(m.absolute_tolerance >= 0.0))
+      bad(path, "top level", "relative_tolerance and absolute_tolerance must be >= 0");
+    if (m.stopping_rule != "split" && m.stopping_rule != "course")
+      bad(path, "top level", "stopping_rule must be \"split\" or \"course\" (got \"" +
+                                 m.stopping_rule + "\")");
     for (const auto& pj : field<nlohmann::ordered_json>(path, "top level", m.json, "parts")) {
       PartSpec p;
       p.part = field<int>(path, "a part", pj, "part");
       std::string where = "part " + std::to_string(p.part);
-      p.test_points = field<double>(path, where, pj, "test_points");
+      if (m.find_part(p.part)) bad(path, where, "listed twice");
+      p.title = optional(pj, "title", std::string());
       p.test_timeout = optional(pj, "test_timeout", 60.0);
       p.build_timeout = optional(pj, "build_timeout", 1200.0);
-      for (const auto& rj : optional(pj, "renders", nlohmann::ordered_json::array())) {
-        RenderCheck r;
-        r.part = p.part;
-        r.name = field<std::string>(path, where, rj, "name");
-        std::string rw = where + ", render \"" + r.name + "\"";
-        r.scene = field<std::string>(path, rw, rj, "scene");
-        r.course_scene = optional(rj, "course_scene", false);
-        r.args = field<std::vector<std::string>>(path, rw, rj, "args");
-        r.reference_args = field<std::vector<std::string>>(path, rw, rj, "reference_args");
-        r.seed = field<uint64_t>(path, rw, rj, "seed");
-        r.reference_seed = field<uint64_t>(path, rw, rj, "reference_seed");
-        r.points = field<double>(path, rw, rj, "points");
-        r.timeout = optional(rj, "timeout", 60.0);
-        r.reference = field<std::string>(path, rw, rj, "reference");
-        if (rj.contains("made")) r.checksum = optional(rj.at("made"), "crc32", std::string());
-        if (r.seed == r.reference_seed)
-          bad(path, rw, "the graded render must use other random numbers than its reference");
-        p.renders.push_back(r);
+      p.renders_rest_on = optional(pj, "renders_rest_on", std::vector<int>());
+      for (int earlier : p.renders_rest_on)
+        if (earlier < 1 || earlier >= p.part)
+          bad(path, where, "renders_rest_on names part " + std::to_string(earlier) +
+                               ", which is not an earlier part");
+      for (const auto& sj : field<nlohmann::ordered_json>(path, where, pj, "steps")) {
+        StepSpec st;
+        st.part = p.part;
+        st.step = field<int>(path, where + ", a step", sj, "step");
+        std::string sw = where + ", step " + std::to_string(st.step);
+        if (st.step != int(p.steps.size()) + 1) bad(path, sw, "steps are numbered 1, 2, ... in order");
+        st.name = field<std::string>(path, sw, sj, "name");
+        st.title = optional(sj, "title", std::string());
+        st.points = field<double>(path, sw, sj, "points");
+        if (!(st.points >= 0.0)) bad(path, sw, "points must be >= 0");
+        st.functions = optional(sj, "functions", std::vector<std::string>());
+        st.rests_on = optional(sj, "rests_on", std::string());
+        for (const auto& rj : optional(sj, "renders", nlohmann::ordered_json::array())) {
+          RenderCheck r;
+          r.part = p.part;
+          r.step = st.step;
+          std::string scene_name = field<std::string>(path, sw, rj, "name");
+          r.name = st.test_prefix() + "render." + scene_name;
+          std::string rw = sw + ", render \"" + scene_name + "\"";
+          if (m.find_render(r.name) || std::any_of(st.renders.begin(), st.renders.end(),
+                                                   [&](const RenderCheck& o) { return o.name == r.name; }))
+            bad(path, rw, "two renders of one name");
+          r.scene = field<std::string>(path, rw, rj, "scene");
+          r.course_scene = optional(rj, "course_scene", false);
+          r.kind = field<std::string>(path, rw, rj, "kind");
+          if (r.kind != "normals" && r.kind != "direct" && r.kind != "hemisphere" &&
+              r.kind != "path" && r.kind != "adaptive")
+            bad(path, rw, "kind must be normals, direct, hemisphere, path or adaptive");
+          r.args = field<std::vector<std::string>>(path, rw, rj, "args");
+          r.reference_args = field<std::vector<std::string>>(path, rw, rj, "reference_args");
+          r.seed = field<uint64_t>(path, rw, rj, "seed");
+          r.reference_seed = field<uint64_t>(path, rw, rj, "reference_seed");
+          r.timeout = optional(rj, "timeout", 60.0);
+          r.relative_tolerance = optional(rj, "relative_tolerance", -1.0);
+          r.noise_limit = optional(rj, "noise_limit", 0.0);
+          if (r.noise_limit != 0.0 && !(r.noise_limit > 1.0))
+            bad(path, rw, "noise_limit is a factor above 1 (or 0: no noise check)");
+          r.reference = field<std::string>(path, rw, rj, "reference");
+          if (rj.contains("made")) r.checksum = optional(rj.at("made"), "crc32", std::string());
+          if (r.seed == r.reference_seed)
+            bad(path, rw, "the graded render must use other random numbers than its reference");
+          st.renders.push_back(r);
+        }
+        p.steps.push_back(st);
       }
+      if (p.steps.empty()) bad(path, where, "a part has at least one step");
       m.parts.push_back(p);
     }
   } catch (const nlohmann::json::exception& e) {
@@ -92,10 +168,15 @@ void record_reference(const std::string& manifest_path, const std::string& check
   Manifest m = read_manifest(manifest_path);
   bool found = false;
   for (auto& pj : m.json["parts"])
-    for (auto& rj : pj["renders"])
-      if (rj["name"] == check_name) {
-        rj["made"] = made;
-        found = true;
+    for (auto& sj : pj["steps"])
+      for (auto& rj : sj["renders"]) {
+        std::string name = "part" + std::to_string(pj["part"].get<int>()) + ".step" +
+                           std::to_string(sj["step"].get<int>()) + ".render." +
+                           rj["name"].get<std::string>();
+        if (name == check_name) {
+          rj["made"] = made;
+          found = true;
+        }
       }
   if (!found) throw std::runtime_error(manifest_path + ": no render named " + check_name);
   std::ofstream out(manifest_path);

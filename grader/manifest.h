@@ -1,7 +1,8 @@
-// The grading manifest (reference/manifest.json): which checks each part has, their points,
-// and how each reference image was made.
+// The grading manifest (reference/manifest.json), the one rubric: every part's steps in order,
+// each with its points, its functions and its graded renders, and how each reference was made.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -11,37 +12,66 @@ namespace pt::grader {
 
 /// One graded render: a scene rendered with given flags and compared with a reference.
 struct RenderCheck {
-  std::string name;                     ///< "part1.normals.cornell_spheres"
-  int part = 0;
+  std::string name;                     ///< "part3.step4.render.cornell_gap"
+  int part = 0, step = 0;
   std::string scene;                    ///< relative to the project (or to the course's scenes)
   bool course_scene = false;            ///< scene lies in ../shared/scenes/cs184: skipped if absent
+  std::string kind;                     ///< normals, direct, hemisphere, path, adaptive: the hints
   std::vector<std::string> args;        ///< flags of the graded render
   std::vector<std::string> reference_args;  ///< flags of the reference render
   uint64_t seed = 0;                    ///< of the graded render
   uint64_t reference_seed = 0;          ///< of the reference: different random numbers
-  double points = 0.0;
   double timeout = 60.0;                ///< seconds for the graded render
+  double relative_tolerance = -1.0;     ///< of the comparison; < 0: the manifest's
+  /// > 0: the render's per-sample variance must be within this factor of the reference's (made
+  /// with the same estimator and per-sample settings), so that a render taking fewer light
+  /// samples than -l asks for fails although its mean is right. 0: not checked.
+  double noise_limit = 0.0;
   std::string reference;                ///< the reference EXR, relative to the project
   std::string checksum;                 ///< CRC-32 of the reference file, "" until it is made
 };
 
-/// A part: its CTest label's points and time limits, and its renders.
+/// One step of a part: what the student writes in it, its points and its renders. Its tests
+/// are the CTest tests named `partN.stepK.*` (from parts/N-*/tests/stepK_NAME_test.cpp).
+struct StepSpec {
+  int part = 0, step = 0;
+  std::string name;                     ///< "importance"
+  std::string title;                    ///< what the step is, in a few words
+  double points = 0.0;
+  std::vector<std::string> functions;   ///< "parts/3-direct/direct_lighting.cpp: estimate_direct_importance"
+  std::string rests_on;                 ///< what its checks call besides its functions, in words
+  std::vector<RenderCheck> renders;
+
+  std::string full_name() const;        ///< "part3.step4.importance"
+  std::string test_prefix() const;      ///< "part3.step4."
+};
+
+/// A part: its steps, its time limits, and the earlier parts its renders run.
 struct PartSpec {
   int part = 0;
-  double test_points = 0.0;
+  std::string title;
   double test_timeout = 60.0;           ///< per test
   double build_timeout = 1200.0;
-  std::vector<RenderCheck> renders;
+  std::vector<int> renders_rest_on;     ///< earlier parts whose student code its renders run
+  std::vector<StepSpec> steps;
+
+  const StepSpec* find_step(int step) const;
+  std::vector<const RenderCheck*> renders() const;
+  double points() const;
 };
 
 /// The whole manifest; `json` keeps what was read so that a rewrite keeps unknown fields.
 struct Manifest {
   int block_size = 16;
   double alpha = 0.01;
+  double relative_tolerance = 1e-5;     ///< of every render comparison (float rounding)
+  double absolute_tolerance = 1e-6;
+  std::string stopping_rule = "split";  ///< Part 5: "split" (the handout's) or "course"
   std::vector<PartSpec> parts;
   nlohmann::ordered_json json;
 
   const PartSpec* find_part(int part) const;
+  const RenderCheck* find_render(const std::string& name) const;
 };
 
 /// Reads and checks the manifest; throws std::runtime_error naming the file and the entry.

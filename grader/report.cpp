@@ -15,48 +15,90 @@ std::string points(double score, double max) {
 
 }  // namespace
 
-void print_score_table(std::ostream& out, const std::vector<CheckResult>& results) {
+void print_score_table(std::ostream& out, const std::vector<PartResult>& results) {
   double total = 0.0, max = 0.0;
-  int last_part = -1;
-  char line[200];
-  for (const CheckResult& r : results) {
-    if (r.part != last_part) {
-      out << "\nPart " << r.part << "\n";
-      std::snprintf(line, sizeof line, "  %-44s %9s  %s\n", "check", "points", "result");
-      out << line;
-      last_part = r.part;
+  char line[240];
+  for (const PartResult& p : results) {
+    out << "\nPart " << p.part << "\n";
+    if (!p.rests_on.empty()) out << p.rests_on << "\n";
+    if (!p.built) {
+      std::istringstream in(p.build_output);
+      for (std::string l; std::getline(in, l);) out << "  " << l << "\n";
     }
-    const char* verdict = r.skipped ? "skipped" : r.pass ? "pass" : "FAIL";
-    std::snprintf(line, sizeof line, "  %-44s %9s  %-7s %5.1fs\n", r.name.c_str(),
-                  points(r.score, r.max_score).c_str(), verdict, r.seconds);
+    std::snprintf(line, sizeof line, "  %-34s %9s  %-6s %s\n", "step", "points", "result", "checks");
     out << line;
-    if (!r.pass || r.skipped) {
-      std::istringstream in(r.output);
-      for (std::string l; std::getline(in, l);) out << "      " << l << "\n";
+    for (const StepResult& s : p.steps) {
+      const char* verdict = s.passed() ? "pass" : "FAIL";
+      std::string checks = s.counted() == 0
+                               ? "none counted"
+                               : std::to_string(s.counted() - s.failed()) + " of " +
+                                     std::to_string(s.counted()) + " pass";
+      double seconds = 0.0;
+      for (const CheckResult& c : s.checks) seconds += c.seconds;
+      std::snprintf(line, sizeof line, "  %-34s %9s  %-6s %-14s %5.1fs\n", s.name.c_str(),
+                    points(s.score, s.max_score).c_str(), verdict, checks.c_str(), seconds);
+      out << line;
+      if (!s.passed() && p.built) {
+        std::istringstream in(s.message);
+        for (std::string l; std::getline(in, l);) out << "      " << l << "\n";
+      }
+      total += s.score;
+      max += s.max_score;
     }
-    total += r.score;
-    max += r.max_score;
+    for (const std::string& u : p.unassigned)
+      out << "  (not scored: the test " << u << " names no step of part " << p.part << ")\n";
   }
-  out << "\nTotal: " << points(total, max) << (all_passed(results) ? "  (all checks pass)" : "")
+  out << "\nTotal: " << points(total, max) << (all_passed(results) ? "  (every step passes)" : "")
       << "\n";
 }
 
-nlohmann::json gradescope_results(const std::vector<CheckResult>& results, double seconds) {
+nlohmann::json gradescope_results(const std::vector<PartResult>& results, const RunInfo& info) {
   nlohmann::json j;
   double total = 0.0;
+  std::string output;
   j["tests"] = nlohmann::json::array();
-  for (const CheckResult& r : results) {
-    nlohmann::json t;
-    t["name"] = r.name;
-    t["score"] = r.score;
-    t["max_score"] = r.max_score;
-    t["output"] = (r.skipped ? "skipped: " : r.pass ? "pass: " : "FAIL: ") + r.output;
-    t["visibility"] = "visible";
-    j["tests"].push_back(t);
-    total += r.score;
+  nlohmann::json parts = nlohmann::json::array();
+  bool built = true;
+  for (const PartResult& p : results) {
+    parts.push_back(p.part);
+    built = built && p.built;
+    if (!p.rests_on.empty()) output += p.rests_on + "\n";
+    if (!p.built) output += p.build_output + "\n";
+    for (const StepResult& s : p.steps) {
+      nlohmann::json t;
+      t["name"] = s.name;
+      t["number"] = std::to_string(s.part) + "." + std::to_string(s.step);
+      t["score"] = s.score;
+      t["max_score"] = s.max_score;
+      t["status"] = s.passed() ? "passed" : "failed";
+      t["output"] = s.message;
+      t["visibility"] = "visible";
+      nlohmann::json checks = nlohmann::json::array();
+      for (const CheckResult& c : s.checks) {
+        nlohmann::json cj = {{"name", c.name},
+                             {"kind", c.kind},
+                             {"status", c.skipped ? "skipped" : c.pass ? "passed" : "failed"},
+                             {"seconds", c.seconds},
+                             {"output", c.output}};
+        if (c.kind == "render") cj["seed"] = c.seed;
+        checks.push_back(cj);
+      }
+      size_t dot = s.name.rfind('.');
+      t["extra_data"] = {{"part", s.part},
+                         {"step", s.step},
+                         {"step_name", dot == std::string::npos ? s.name : s.name.substr(dot + 1)},
+                         {"checks", checks}};
+      j["tests"].push_back(t);
+      total += s.score;
+    }
   }
   j["score"] = total;
-  j["execution_time"] = seconds;
+  j["execution_time"] = info.seconds;
+  j["output"] = output;
+  j["extra_data"] = {{"isolated", info.isolated},
+                     {"seed_offset", info.seed_offset},
+                     {"parts", parts},
+                     {"build", built ? "ok" : "failed"}};
   return j;
 }
 
@@ -78,6 +120,8 @@ std::string validate_gradescope(const nlohmann::json& j) {
     if (t.contains("max_score") && !t["max_score"].is_number())
       return where + ".max_score is not a number";
     if (t.contains("output") && !t["output"].is_string()) return where + ".output is not a string";
+    if (t.contains("status") && t["status"] != "passed" && t["status"] != "failed")
+      return where + ".status is not passed or failed";
     if (t.contains("visibility")) {
       std::string v = t["visibility"].is_string() ? t["visibility"].get<std::string>() : "";
       if (v != "hidden" && v != "after_due_date" && v != "after_published" && v != "visible")
@@ -90,10 +134,14 @@ std::string validate_gradescope(const nlohmann::json& j) {
   return "";
 }
 
-bool all_passed(const std::vector<CheckResult>& results) {
-  for (const CheckResult& r : results)
-    if (!r.skipped && (!r.pass || r.score < r.max_score)) return false;
-  return !results.empty();
+bool all_passed(const std::vector<PartResult>& results) {
+  if (results.empty()) return false;
+  for (const PartResult& p : results) {
+    if (!p.built || p.steps.empty()) return false;
+    for (const StepResult& s : p.steps)
+      if (!s.passed()) return false;
+  }
+  return true;
 }
 
 }  // namespace pt::grader

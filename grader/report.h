@@ -11,17 +11,27 @@
 
 namespace pt::grader {
 
-/// Prints each check with its points and pass/fail, its message under a failure, and totals.
-void print_score_table(std::ostream& out, const std::vector<CheckResult>& results);
+/// What the run was, for the JSON's extra_data.
+struct RunInfo {
+  bool isolated = false;
+  int64_t seed_offset = 0;
+  double seconds = 0.0;
+};
 
-/// The Gradescope autograder results: {"score", "execution_time", "tests": [{"name", "score",
-/// "max_score", "output", "visibility"}]}.
-nlohmann::json gradescope_results(const std::vector<CheckResult>& results, double seconds);
+/// Prints, per part, the line on the parts its renders rest on, then one row per step (step,
+/// points, pass/FAIL, checks) with the first failing check and its message under a failure, and
+/// the total.
+void print_score_table(std::ostream& out, const std::vector<PartResult>& results);
+
+/// Gradescope's autograder results, one test per step (docs/grading.md): {"score",
+/// "execution_time", "output", "tests": [{"name", "number", "score", "max_score", "status",
+/// "output", "visibility", "extra_data": {"checks": [...]}}], "extra_data"}.
+nlohmann::json gradescope_results(const std::vector<PartResult>& results, const RunInfo& info);
 
 /// Checks `j` against that documented shape; returns "" when it fits, else what does not.
 std::string validate_gradescope(const nlohmann::json& j);
 
-/// Whether every counted check passed with full marks.
-bool all_passed(const std::vector<CheckResult>& results);
+/// Whether every step of every part has full marks.
+bool all_passed(const std::vector<PartResult>& results);
 
 }  // namespace pt::grader

@@ -39,6 +39,14 @@ struct Sandbox {
   ChildOptions options(const std::string& scratch, double wall_seconds) const;
 };
 
+/// One test of a part as the complete solution's build registers it.
+struct TrustedTest {
+  std::string name;        ///< partN.stepK.suite.test (CTest's name, "isolated." removed)
+  int part = 0, step = 0;
+  std::string executable;  ///< its GoogleTest program in the build tree
+  std::string gtest;       ///< its GoogleTest name, Suite.Name
+};
+
 /// A test's outcome as the grader counts it.
 enum class SealedStatus { passed, failed, skipped };
 

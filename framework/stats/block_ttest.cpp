@@ -89,7 +89,8 @@ BlockTestResult block_t_test(const RenderEstimate& render, const RenderEstimate&
       return result;
     }
   }
-  if (options.block_size <= 0 || !(options.alpha > 0.0 && options.alpha < 1.0)) {
+  if (options.block_size <= 0 || !(options.alpha > 0.0 && options.alpha < 1.0) ||
+      !(options.relative_tolerance >= 0.0) || !(options.absolute_tolerance >= 0.0)) {
     std::snprintf(buf, sizeof buf, "bad block test options: block size %d, alpha %g",
                   options.block_size, options.alpha);
     result.summary = buf;
@@ -136,20 +137,23 @@ BlockTestResult block_t_test(const RenderEstimate& render, const RenderEstimate&
         double var = (sums[0][c].var_sum + sums[1][c].var_sum) / (double(pixels) * pixels);
         double diff = m_render - m_ref;
         double t, p;
-        if (var > 0.0) {
+        const double tolerance =
+            std::max(options.absolute_tolerance,
+                     options.relative_tolerance * std::max(std::fabs(m_render), std::fabs(m_ref)));
+        if (std::fabs(diff) <= tolerance) {
+          // Within float rounding (the only difference a zero-variance block can have between
+          // two correct images): the same, however small the variance makes the t.
+          t = 0.0;
+          p = 1.0;
+        } else if (var > 0.0) {
           t = diff / std::sqrt(var);
           double den = (sums[0][c].dof_denominator + sums[1][c].dof_denominator) /
                        (double(pixels) * pixels * double(pixels) * pixels);
           double dof = den > 0.0 ? var * var / den : std::numeric_limits<double>::infinity();
           p = two_sided_p(t, dof);
         } else {
-          // No noise on either side (a black background, a directly seen light): only the
-          // rounding of float storage may separate two correct images, a few ulps of the sum.
-          double tolerance = 8.0 * std::numeric_limits<float>::epsilon() *
-                             std::max(std::fabs(m_render), std::fabs(m_ref));
-          bool same = std::fabs(diff) <= tolerance;
-          t = same ? 0.0 : std::copysign(std::numeric_limits<double>::infinity(), diff);
-          p = same ? 1.0 : 0.0;
+          t = std::copysign(std::numeric_limits<double>::infinity(), diff);
+          p = 0.0;
         }
         result.min_p_value = std::min(result.min_p_value, p);
         if (p < threshold) differs = true;

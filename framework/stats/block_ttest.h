@@ -13,6 +13,12 @@ namespace pt {
 struct BlockTestOptions {
   int block_size = 16;   ///< blocks are block_size × block_size pixels (edge blocks smaller)
   double alpha = 0.01;   ///< family-wise significance: each block is tested at alpha / blocks
+  /// Float rounding is not a difference: a block channel whose two means differ by at most
+  /// relative_tolerance of the larger, or by absolute_tolerance, matches whatever its variance
+  /// (blocks with zero or near-zero variance, a normals image or a directly seen light, would
+  /// otherwise turn a rounding difference into an infinite t). 1e-5 is about 80 float ulps.
+  double relative_tolerance = 1e-5;
+  double absolute_tolerance = 1e-6;
 };
 
 /// One block whose mean differs from the reference's more than chance explains.
@@ -36,8 +42,9 @@ struct BlockTestResult {
 /// Splits both images into blocks; for each block and channel compares the block mean of the
 /// render with the reference's by Welch's t-test, the variance of a block mean being
 /// Σ variance_i / count_i / P² over its P pixels (the reference's own variance included), and
-/// fails where the two-sided p-value is below alpha / blocks (Bonferroni). Images of different
-/// sizes, or any non-finite value, fail.
+/// fails where the two-sided p-value is below alpha / blocks (Bonferroni), unless the means agree
+/// within the options' rounding tolerance. Images of different sizes, or any non-finite value,
+/// fail.
 BlockTestResult block_t_test(const RenderEstimate& render, const RenderEstimate& reference,
                              const BlockTestOptions& options = {});
 

@@ -164,6 +164,39 @@ TEST(FrameworkBlockTest, ZeroVarianceExactMatchPassesAndAnyDifferenceFails) {
       << r.summary;
 }
 
+TEST(FrameworkBlockTest, RoundingIsNotADifferenceWhateverTheVariance) {
+  // Two correct renders of a noiseless image (a normals view) computed in another order: every
+  // pixel two float ulps brighter, the variance zero or nearly (1e-14: a t of thousands for a
+  // rounding difference). Within the stated tolerance they match...
+  RenderEstimate a, b;
+  a.width = b.width = kWidth;
+  a.height = b.height = kHeight;
+  for (int i = 0; i < kWidth * kHeight; ++i) {
+    glm::vec3 v(0.5f + 0.4f * float(i % kWidth) / kWidth, 0.25f, 0.75f);
+    a.mean.push_back(v);
+    b.mean.push_back(v * (1.0f + 2.0f * std::numeric_limits<float>::epsilon()));
+    glm::vec3 var(i % 3 == 0 ? 0.0f : 1e-14f);
+    a.variance.push_back(var);
+    b.variance.push_back(var);
+    a.count.push_back(4.0f);
+    b.count.push_back(4.0f);
+  }
+  BlockTestResult r = block_t_test(b, a);
+  EXPECT_TRUE(r.pass) << r.summary;
+  // ...and a difference ten times the tolerance in one block does not.
+  RenderEstimate off = a;
+  for (int y = 0; y < 16; ++y)
+    for (int x = 32; x < 48; ++x) off.mean[size_t(y) * kWidth + x] *= 1.0f + 1e-4f;
+  r = block_t_test(off, a);
+  EXPECT_FALSE(r.pass);
+  ASSERT_EQ(r.failing.size(), 1u);
+  EXPECT_EQ(r.failing[0].block_x, 2);
+  // A tolerance of zero is the exact comparison of old: the rounding fails again.
+  BlockTestOptions exact;
+  exact.relative_tolerance = exact.absolute_tolerance = 0.0;
+  EXPECT_FALSE(block_t_test(b, a, exact).pass);
+}
+
 TEST(FrameworkBlockTest, NoisyRenderAgainstNoiselessBlackStillPasses) {
   // The black band is noiseless in both; the lit part is noisy: zero variance in one block must
   // not make the whole test fragile.

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 #include <gtest/gtest.h>
 
@@ -46,18 +47,24 @@ class GraderGrade : public ::testing::Test {
     nlohmann::ordered_json m;
     m["block_size"] = 16;
     m["alpha"] = 0.01;
-    nlohmann::ordered_json part = {{"part", 3}, {"test_points", 0}, {"renders", nlohmann::ordered_json::array()}};
+    // One step per render, so that each failure shows in a step of its own.
+    nlohmann::ordered_json part = {{"part", 3}, {"steps", nlohmann::ordered_json::array()}};
+    int step = 0;
     for (const char* s : {"good.exr", "crash", "hang", "garbage", "dark.exr"}) {
-      part["renders"].push_back({{"name", std::string("part3.") + s},
-                                 {"scene", std::string("scenes/") + s},
-                                 {"args", {"-s", "16"}},
-                                 {"reference_args", {"-s", "64"}},
-                                 {"seed", 2},
-                                 {"reference_seed", 1},
-                                 {"points", 5},
-                                 {"timeout", 1.0},
-                                 {"reference", "reference/ref.exr"},
-                                 {"made", {{"crc32", sum}}}});
+      nlohmann::ordered_json render = {{"name", s},
+                                       {"scene", std::string("scenes/") + s},
+                                       {"kind", "direct"},
+                                       {"args", {"-s", "16"}},
+                                       {"reference_args", {"-s", "64"}},
+                                       {"seed", 2},
+                                       {"reference_seed", 1},
+                                       {"timeout", 1.0},
+                                       {"reference", "reference/ref.exr"},
+                                       {"made", {{"crc32", sum}}}};
+      part["steps"].push_back({{"step", ++step},
+                               {"name", std::string("s") + std::to_string(step)},
+                               {"points", 5},
+                               {"renders", nlohmann::ordered_json::array({render})}});
     }
     m["parts"] = {part};
     std::ofstream(root_ / "reference" / "manifest.json") << m.dump(2);
@@ -74,33 +81,70 @@ class GraderGrade : public ::testing::Test {
   GradeOptions options_;
 };
 
-TEST_F(GraderGrade, EachFailureStaysInItsOwnCheck) {
+TEST_F(GraderGrade, EachFailureStaysInItsOwnStep) {
   Manifest m = read_manifest(options_.manifest_path);
-  std::vector<CheckResult> r = grade_part(m, 3, options_);
-  ASSERT_EQ(r.size(), 5u);
-  EXPECT_TRUE(r[0].pass) << r[0].output;
+  PartResult p = grade_part(m, 3, options_);
+  ASSERT_EQ(p.steps.size(), 5u);
+  const std::vector<StepResult>& r = p.steps;
+  EXPECT_TRUE(r[0].passed()) << r[0].message;
   EXPECT_EQ(r[0].score, 5.0);
-  EXPECT_FALSE(r[1].pass);
-  EXPECT_NE(r[1].output.find("crashed (SIGSEGV"), std::string::npos) << r[1].output;
-  EXPECT_FALSE(r[2].pass);
-  EXPECT_NE(r[2].output.find("time limit"), std::string::npos) << r[2].output;
-  EXPECT_LT(r[2].seconds, 10.0);
-  EXPECT_FALSE(r[3].pass);
-  EXPECT_NE(r[3].output.find("cannot be read"), std::string::npos) << r[3].output;
-  EXPECT_FALSE(r[4].pass);
-  EXPECT_NE(r[4].output.find("slightly too dark everywhere"), std::string::npos) << r[4].output;
-  EXPECT_NE(r[4].output.find("part3.dark.exr_diff.png"), std::string::npos) << r[4].output;
-  EXPECT_TRUE(fs::exists(root_ / "out" / "part3.dark.exr_diff.png"));
+  EXPECT_EQ(r[0].name, "part3.step1.s1");
+  EXPECT_EQ(r[0].checks[0].name, "part3.step1.render.good.exr");
+  EXPECT_FALSE(r[1].passed());
+  EXPECT_NE(r[1].message.find("crashed (SIGSEGV"), std::string::npos) << r[1].message;
+  EXPECT_FALSE(r[2].passed());
+  EXPECT_NE(r[2].message.find("time limit"), std::string::npos) << r[2].message;
+  EXPECT_LT(r[2].checks[0].seconds, 10.0);
+  EXPECT_FALSE(r[3].passed());
+  EXPECT_NE(r[3].message.find("cannot be read"), std::string::npos) << r[3].message;
+  EXPECT_FALSE(r[4].passed());
+  EXPECT_NE(r[4].message.find("slightly too dark everywhere"), std::string::npos) << r[4].message;
+  EXPECT_NE(r[4].message.find("part3.step5.render.dark.exr_diff.png"), std::string::npos) << r[4].message;
+  EXPECT_TRUE(fs::exists(root_ / "out" / "part3.step5.render.dark.exr_diff.png"));
   std::ostringstream table;
-  print_score_table(table, r);
+  print_score_table(table, {p});
   EXPECT_NE(table.str().find("Total: 5/25"), std::string::npos) << table.str();
-  EXPECT_EQ(validate_gradescope(gradescope_results(r, 1.0)), "");
+  EXPECT_EQ(validate_gradescope(gradescope_results({p}, RunInfo{})), "");
+}
+
+TEST_F(GraderGrade, ASeedOffsetRendersWithOtherSeeds) {
+  Manifest m = read_manifest(options_.manifest_path);
+  options_.seed_offset = 40;
+  CheckResult r = grade_render(m, m.parts[0].steps[0].renders[0], options_);
+  EXPECT_EQ(r.seed, 42u);
+  EXPECT_TRUE(r.pass) << r.output;
+}
+
+TEST_F(GraderGrade, TheEarlierPartsStateIsOneLine) {
+  std::ofstream(options_.manifest_path) << R"({"parts": [
+      {"part": 1, "steps": [{"step": 1, "name": "a", "points": 1}]},
+      {"part": 2, "steps": [{"step": 1, "name": "b", "points": 1}]},
+      {"part": 3, "renders_rest_on": [1, 2], "steps": [{"step": 1, "name": "c", "points": 1}]}]})";
+  Manifest m = read_manifest(options_.manifest_path);
+  EXPECT_EQ(rests_on_line(m, 1, options_), "");
+  EXPECT_EQ(rests_on_line(m, 3, options_),
+            "Part 3's renders trace rays with your Part 1 and Part 2: Part 1 not graded yet "
+            "(grader --part 1), Part 2 not graded yet (grader --part 2).");
+  PartResult one;
+  one.part = 1;
+  one.steps.push_back(score_step(m.parts[0].steps[0], {CheckResult{"part1.step1.a.x", "test", true, false, "", 0.0, 0}}));
+  PartResult two;
+  two.part = 2;
+  two.steps.push_back(score_step(m.parts[1].steps[0], {CheckResult{"part2.step1.b.x", "test", false, false, "failed", 0.0, 0}}));
+  record_state(one, options_);
+  record_state(two, options_);
+  std::string line = rests_on_line(m, 3, options_);
+  EXPECT_NE(line.find("Part 1 passed ("), std::string::npos) << line;
+  EXPECT_NE(line.find("Part 2 has 1 failing step ("), std::string::npos) << line;
+  options_.isolated = true;
+  EXPECT_NE(rests_on_line(m, 3, options_).find("the complete solution of Part 1 and Part 2"),
+            std::string::npos);
 }
 
 TEST_F(GraderGrade, AReferenceThatDoesNotMatchItsChecksumIsRefused) {
   std::ofstream(root_ / "reference" / "ref.exr", std::ios::app) << "tampered";
   Manifest m = read_manifest(options_.manifest_path);
-  CheckResult r = grade_render(m, m.parts[0].renders[0], options_);
+  CheckResult r = grade_render(m, m.parts[0].steps[0].renders[0], options_);
   EXPECT_FALSE(r.pass);
   EXPECT_NE(r.output.find("checksum"), std::string::npos) << r.output;
 }
@@ -108,20 +152,37 @@ TEST_F(GraderGrade, AReferenceThatDoesNotMatchItsChecksumIsRefused) {
 TEST_F(GraderGrade, AMissingReferenceSaysHowToMakeIt) {
   fs::remove(root_ / "reference" / "ref.exr");
   Manifest m = read_manifest(options_.manifest_path);
-  CheckResult r = grade_render(m, m.parts[0].renders[0], options_);
+  CheckResult r = grade_render(m, m.parts[0].steps[0].renders[0], options_);
   EXPECT_FALSE(r.pass);
   EXPECT_NE(r.output.find("--make-reference"), std::string::npos) << r.output;
 }
 
 TEST_F(GraderGrade, ABadManifestNamesTheEntry) {
-  std::ofstream(options_.manifest_path) << R"({"parts": [{"part": 1, "test_points": 5,
-      "renders": [{"name": "x", "scene": "s"}]}]})";
+  std::ofstream(options_.manifest_path) << R"({"parts": [{"part": 1, "steps": [{"step": 1,
+      "name": "a", "points": 1, "renders": [{"name": "x", "scene": "s", "kind": "normals"}]}]}]})";
   try {
     read_manifest(options_.manifest_path);
     FAIL() << "a render without args was accepted";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("render \"x\""), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("args"), std::string::npos) << e.what();
+  }
+}
+
+// The project's own rubric: every reference recorded, no two graded checks on one image (the
+// normals of two scenes that differ only in materials are one image), every step with points.
+TEST(GraderManifest, TheProjectsRubricHasDistinctReferencesAndPointsInEveryStep) {
+  const Manifest m = read_manifest(std::string(PT_SOURCE_DIR) + "/reference/manifest.json");
+  std::map<std::string, std::string> seen;
+  for (const PartSpec& p : m.parts) {
+    EXPECT_GT(p.points(), 0.0) << "part " << p.part;
+    for (const StepSpec& s : p.steps) EXPECT_GT(s.points, 0.0) << s.full_name();
+    for (const RenderCheck* r : p.renders()) {
+      EXPECT_FALSE(r->checksum.empty()) << r->name << ": no reference recorded";
+      if (r->checksum.empty()) continue;
+      auto [at, fresh] = seen.emplace(r->checksum, r->name);
+      EXPECT_TRUE(fresh) << r->name << " and " << at->second << " compare with the same image";
+    }
   }
 }
 

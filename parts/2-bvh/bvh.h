@@ -72,6 +72,12 @@ class Bvh final : public RayQuery {
   /// Primitive indices in leaf order: leaf node n holds order()[n.offset .. n.offset + n.count).
   const std::vector<uint32_t>& order() const { return leaves_.order; }
 
+  /// Counts, into *counter, every primitive a leaf test of this tree tests from now on (null:
+  /// stop). Given code, for the checks of what a tree saves (Part 2's traversal tests compare the
+  /// count per ray with what a good walk of the same tree needs); a render never sets it. Not
+  /// for a tree shared between threads while it counts.
+  void count_primitive_tests(uint64_t* counter) { primitive_tests_ = counter; }
+
   static constexpr int kMaxLeafSize = 255;
   /// Deeper than this the build splits by count, so no traversal stack can overflow.
   static constexpr int kMaxDepth = 96;
@@ -89,9 +95,11 @@ class Bvh final : public RayQuery {
   void traverse_nearest(NearestState* state) const;
   /// The leaf tests, for a node of this tree.
   void intersect_leaf(const BvhNode& leaf, NearestState* state) const {
+    if (primitive_tests_) *primitive_tests_ += leaf.count;
     pt::intersect_leaf(scene_, leaves_, leaf.offset, leaf.count, state);
   }
   bool leaf_occludes(const BvhNode& leaf, const Ray& ray) const {
+    if (primitive_tests_) *primitive_tests_ += leaf.count;
     return pt::leaf_occludes(scene_, leaves_, leaf.offset, leaf.count, ray);
   }
 
@@ -99,6 +107,7 @@ class Bvh final : public RayQuery {
   std::vector<BvhNode> nodes_;
   LeafPrimitives leaves_;
   BvhStats stats_;
+  uint64_t* primitive_tests_ = nullptr;
 
   friend class BvhBuilder;
 };

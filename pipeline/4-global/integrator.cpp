@@ -25,7 +25,11 @@ std::unique_ptr<Integrator> Integrator::create(const RenderSettings& settings, c
   c.russian_roulette = settings.russian_roulette;
   c.only_bounce = settings.only_bounce;
   in->normals_ = settings.shading == ShadingMode::normals || in->lights_->empty();
-  in->direct_only_ = c.max_depth <= 1 && !c.mis;
+  switch (settings.integrator) {
+    case IntegratorChoice::direct: in->direct_only_ = true; break;
+    case IntegratorChoice::path: in->direct_only_ = false; break;
+    case IntegratorChoice::automatic: in->direct_only_ = c.max_depth <= 1 && !c.mis; break;
+  }
   return in;
 }
 

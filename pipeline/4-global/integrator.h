@@ -18,10 +18,10 @@
 namespace pt {
 
 /// Owns the scene's LightSet (and environment map) and answers radiance per camera ray: by
-/// direct light alone (pipeline/3-direct, so Part 3 renders without Part 4) for -m 0 or 1 without
-/// MIS, by Part 4's paths otherwise. When the scene has nothing that emits (no light, no emissive
-/// surface, no environment) it shows the surface normals instead of a black image, and traces no
-/// shadow rays.
+/// direct light alone (pipeline/3-direct, so Part 3 renders without Part 4) with --integrator
+/// direct, or for -m 0 or 1 without MIS; by Part 4's paths otherwise. When the scene has nothing
+/// that emits (no light, no emissive surface, no environment) it shows the surface normals
+/// instead of a black image, and traces no shadow rays.
 class Integrator {
  public:
   /// Builds one for `scene` answered by `query` (both must outlive it). Returns null and a
@@ -40,7 +40,7 @@ class Integrator {
   std::unique_ptr<LightSet> lights_;
   std::unique_ptr<LightingContext> ctx_;
   bool normals_ = false;
-  bool direct_only_ = false;  ///< depth 0 or 1 without MIS: Part 3's estimate is the whole answer
+  bool direct_only_ = false;  ///< Part 3's estimate is the whole answer (no Part 4 code runs)
 };
 
 }  // namespace pt

@@ -118,6 +118,14 @@ std::vector<SceneEntry> scene_entries() {
       {"cornell_spheres", "the box with two diffuse spheres", true},
       {"cornell_mirror_glass", "the box with a mirror sphere and a glass sphere (ior 1.5)", true},
       {"cornell_coil", "the box with a closed tube coiled along a helix (smooth normals)", true},
+      {"cornell_smooth",
+       "the box with a coarse bumpy sphere (768 triangles, smooth per-vertex normals): its "
+       "facets show wherever a face normal stands in for the interpolated one",
+       true},
+      {"cornell_small",
+       "cornell_smooth at 1/20 scale (a box 0.1 wide, the sphere 1.5 thousandths over the "
+       "floor): the same image, but a fixed shadow-ray offset of 0.05 or 0.2 skips the occluders",
+       true},
       {"dense_mesh",
        "the box with a million triangles of very different sizes: a detailed bumpy statue, "
        "pebbles, a coil and two thin columns",
@@ -184,6 +192,28 @@ Document build_scene(const std::string& name, const SceneOptions& options) {
     add_mesh(doc, std::move(g), "coil",
              glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, float(options.coil.tube_radius) + 0.03f)));
     return doc;
+  }
+  if (name == "cornell_smooth") {
+    doc.materials.push_back(diffuse("smooth", glm::vec3(0.75f)));
+    MeshGeometry g;
+    g.name = "smoothSphere";
+    // Coarse on purpose: 8 x 8 quads a cube face, so a face normal differs from the
+    // interpolated one by up to about 20 degrees across most of each facet.
+    g.mesh = make_dense_sphere(DenseParams{8, 0.08, 3.0});
+    const float scale = 0.45f;
+    const float lift = scale * 1.08f + 0.03f;
+    add_mesh(doc, std::move(g), "smooth",
+             glm::scale(glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, lift)), glm::vec3(scale)));
+    return doc;
+  }
+  if (name == "cornell_small") {
+    // Radiance does not change with scale, so this is cornell_smooth's image; only a renderer
+    // that offsets its shadow rays by a fixed distance (instead of the hit point's error
+    // bound) sees the difference, as light leaking past the sphere and under it.
+    Document small = build_scene("cornell_smooth", options);
+    const glm::mat4 shrink = glm::scale(glm::mat4(1.0f), glm::vec3(0.05f));
+    for (Node& n : small.nodes) n.transform = shrink * n.transform;
+    return small;
   }
   if (name == "dense_mesh") return dense_room(std::move(doc), options);
   if (name == "dense_sphere") {

@@ -62,9 +62,10 @@ TEST(ray_box, rays_along_faces_and_flat_boxes_count) {
 TEST(ray_box, never_loses_a_hit_to_rounding) {
   // Rays aimed at points of small triangles far from the origin, axis-aligned ones among them
   // (flat boxes): wherever the triangle is hit at t, its box must be entered by the distance a
-  // traversal culls at (t stretched by kHitDistanceSlack, since t itself is rounded).
+  // traversal culls at (t stretched by kHitDistanceSlack, since t itself is rounded). Conservative
+  // is not "always yes": a ray passing twenty box widths beside the box must miss it.
   Rng rng(3);
-  int hits = 0, lost = 0;
+  int hits = 0, lost = 0, beside = 0, false_hits = 0;
   for (int i = 0; i < 200000; ++i) {
     const float scale = std::ldexp(1.0f, int(rng.next_u32() % 30) - 10);
     const glm::vec3 c = scale * (glm::vec3(rng.next_float(), rng.next_float(), rng.next_float()) - 0.5f) * 8.0f;
@@ -85,9 +86,19 @@ TEST(ray_box, never_loses_a_hit_to_rounding) {
     const float bound = th.t * kHitDistanceSlack;
     float t;
     if (!intersect_box(box, BoxRay(r), bound, &t) || t > bound) ++lost;
+    const glm::vec3 side = glm::normalize(glm::cross(r.d, glm::vec3(0.6f, 0.8f, 0.0f) + 1e-3f));
+    Ray miss = r;
+    miss.d = glm::normalize(target + 0.02f * scale * side - r.o);
+    if (std::isfinite(miss.d.x)) {
+      ++beside;
+      if (intersect_box(box, BoxRay(miss), std::numeric_limits<float>::infinity(), &t)) ++false_hits;
+    }
   }
   EXPECT_GT(hits, 100000);
   EXPECT_EQ(lost, 0);
+  EXPECT_GT(beside, 100000);
+  EXPECT_EQ(false_hits, 0) << "intersect_box says yes to rays that pass twenty box widths beside "
+                              "the box: a box test must cull what the ray misses";
 }
 
 }  // namespace

@@ -47,6 +47,30 @@ TEST(importance, point_light_over_plane_is_exact) {
   EXPECT_EQ(rig.query.occluded_calls, 1);
 }
 
+// -l is the number of samples per area light: a floor point under the panel takes exactly that
+// many (one shadow ray each), and the estimate averages them. One sample whatever -l says gives
+// the right mean with -l times the variance, which no mean comparison sees.
+TEST(importance, an_area_light_takes_l_samples) {
+  Scene s = test::panel_under_ceiling();
+  const uint32_t floor = test::add_material(s, glm::vec3(0.5f));
+  test::add_quad(s, {-2, -2, 0}, {2, -2, 0}, {2, 2, 0}, {-2, 2, 0}, floor);
+  for (int l : {1, 4, 7}) {
+    SCOPED_TRACE("-l " + std::to_string(l));
+    test::Rig rig(s);
+    rig.ctx.light_samples = l;
+    Ray r;
+    r.o = glm::vec3(0.1f, 0.2f, 0.5f);  // between floor and panel, looking down at the floor
+    r.d = glm::vec3(0.0f, 0.0f, -1.0f);
+    Rng rng(3);
+    const glm::vec3 L = test::direct_only(rig.ctx, r, rng);
+    EXPECT_GT(L.x, 0.0f);
+    // A shadow ray to a light with an emitting panel is a nearest-hit query (the panel it may hit
+    // is the light's own face, LightSet::unoccluded); the camera ray is the one other query.
+    EXPECT_EQ(rig.query.intersect_calls - 1 + rig.query.occluded_calls, l)
+        << "shadow rays for one floor point under one area light: one per light sample";
+  }
+}
+
 // What the scene does not need is not done.
 TEST(importance, no_environment_means_a_miss_is_black_at_once) {
   Scene s;

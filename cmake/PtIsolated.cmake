@@ -1,0 +1,99 @@
+# pt_add_isolated_grading(): the targets `grader --part N --isolated` builds, so that only part
+# N's student code is graded and a bug in one part never costs points in another.
+#
+#   grade_partN_isolated  part N's objects from parts/ (the student's), every other part's
+#                         compiled from the complete solution in PT_SOLUTION_DIR/parts/, the
+#                         given code (framework, pipeline/, app/) from this tree, linked into
+#                         pt_isolatedN; on it pathtracer_isolatedN and part N's step tests again,
+#                         named isolated.partN.stepK.NAME.* under the label partN_isolated.
+#
+# PT_SOLUTION_DIR is a copy of the project with the complete solution, kept where the student's
+# code cannot change it (the autograder bundle's own copy; a mutant run's pristine tree). Left
+# empty, or naming this tree, the solution is this tree: every part is already the solution's,
+# so grade_partN_isolated is grade_partN and the grader grades the ordinary targets.
+#
+# The solution's part files are compiled against this tree's headers (the given headers are the
+# same in both: they hold no solution), so the objects of every other layer are reused as they
+# are and only part files and links are added.
+include_guard(GLOBAL)
+
+set(PT_SOLUTION_DIR "" CACHE PATH
+    "A copy of the project holding the complete solution, for `grader --isolated` (empty: this tree)")
+
+function(pt_add_isolated_grading)
+  get_property(parts GLOBAL PROPERTY PT_PARTS)
+  set(solution "")
+  if(PT_SOLUTION_DIR)
+    get_filename_component(solution "${PT_SOLUTION_DIR}" REALPATH)
+    get_filename_component(here "${PROJECT_SOURCE_DIR}" REALPATH)
+    if(solution STREQUAL here)
+      set(solution "")
+    elseif(NOT EXISTS "${solution}/parts")
+      message(FATAL_ERROR "PT_SOLUTION_DIR=${PT_SOLUTION_DIR}: no parts/ folder there")
+    endif()
+  endif()
+  if(NOT solution)
+    foreach(n ${parts})
+      add_custom_target(grade_part${n}_isolated)
+      add_dependencies(grade_part${n}_isolated grade_part${n})
+    endforeach()
+    return()
+  endif()
+
+  # The solution's part objects, once per part.
+  set(below pt_framework)
+  foreach(k ${parts})
+    get_property(dir GLOBAL PROPERTY PT_PART${k}_DIR)
+    file(GLOB srcs CONFIGURE_DEPENDS ${solution}/parts/${dir}/*.cpp)
+    if(NOT srcs)
+      message(FATAL_ERROR "PT_SOLUTION_DIR: ${solution}/parts/${dir} has no sources")
+    endif()
+    add_library(pt_solution_part${k}_obj OBJECT ${srcs})
+    pt_lto_objects(pt_solution_part${k}_obj)
+    target_include_directories(pt_solution_part${k}_obj PUBLIC ${PROJECT_SOURCE_DIR})
+    target_link_libraries(pt_solution_part${k}_obj PUBLIC ${below})
+    get_property(pipeline GLOBAL PROPERTY PT_PART${k}_PIPELINE)
+    set(below pt_part${k})
+    if(pipeline)
+      set(below ${pipeline})
+    endif()
+  endforeach()
+
+  foreach(n ${parts})
+    set(objects "")
+    foreach(k ${parts})
+      if(k EQUAL n)
+        list(APPEND objects $<TARGET_OBJECTS:pt_part${k}_obj>)
+      else()
+        list(APPEND objects $<TARGET_OBJECTS:pt_solution_part${k}_obj>)
+      endif()
+      get_property(pipeline GLOBAL PROPERTY PT_PART${k}_PIPELINE)
+      if(pipeline)
+        list(APPEND objects $<TARGET_OBJECTS:${pipeline}_obj>)
+      endif()
+    endforeach()
+    if(TARGET pt_accel)
+      list(APPEND objects $<TARGET_OBJECTS:pt_accel_obj>)
+    endif()
+    list(APPEND objects $<TARGET_OBJECTS:pt_app_obj>)
+    # One archive of every layer above the framework: the linker takes from it what is called.
+    add_library(pt_isolated${n} STATIC ${objects})
+    target_include_directories(pt_isolated${n} PUBLIC ${PROJECT_SOURCE_DIR})
+    target_link_libraries(pt_isolated${n} PUBLIC pt_framework CLI11::CLI11)
+    if(TARGET pt_accel)
+      target_compile_definitions(pt_isolated${n} PUBLIC PT_HAVE_WIDE_BVH=1)
+    endif()
+
+    add_executable(pathtracer_isolated${n} ${PROJECT_SOURCE_DIR}/app/pathtracer_main.cpp
+                                          ${PROJECT_SOURCE_DIR}/app/command_line.cpp)
+    target_link_libraries(pathtracer_isolated${n} PRIVATE pt_isolated${n})
+    pt_enable_lto(pathtracer_isolated${n})
+
+    get_property(dir GLOBAL PROPERTY PT_PART${n}_DIR)
+    pt_add_tests_in(DIR ${PROJECT_SOURCE_DIR}/parts/${dir}/tests LABEL part${n}_isolated
+      TARGET_PREFIX isolated_part${n} TEST_PREFIX isolated.part${n}
+      LIBS pt_isolated${n} STEPS NO_STRESS OUT tests)
+    add_custom_target(grade_part${n}_isolated)
+    add_dependencies(grade_part${n}_isolated pathtracer_isolated${n} ${tests})
+  endforeach()
+endfunction()
