@@ -107,6 +107,8 @@ BuildOutcome student_build(int part, const AutogradeLayout& L, const Sandbox& sa
     target += "_isolated";
   std::string scratch = sandbox.make_scratch("build");
   ChildOptions o = sandbox.options(scratch, timeout);
+  o.limits.wall_seconds = timeout;  // the build's own limit, never a test run's cap
+  o.limits.cpu_seconds = timeout * 4 + 10;
   o.limits.address_space = size_t(8) << 30;  // the compiler on CGAL's headers
   o.limits.file_size = size_t(1) << 30;
   o.limits.disk_bytes = size_t(4) << 30;

@@ -157,11 +157,14 @@ BundleSummary make_gradescope_bundle(const std::string& source_dir, const std::s
     fs::copy_file(from, stage / script);
     fs::permissions(stage / script, fs::perms(0755));
   }
-  fs::path scenes = src.parent_path() / "shared" / "scenes" / "cs184";
-  if (fs::is_directory(scenes)) {
-    for (const fs::directory_entry& e : fs::recursive_directory_iterator(scenes)) {
+  // What tests and renders read beside the project (../shared): the course scenes and the ray
+  // sets, so that no graded test skips on Gradescope for want of them.
+  for (const char* shared : {"scenes/cs184", "rays"}) {
+    fs::path from_root = src.parent_path() / "shared" / shared;
+    if (!fs::is_directory(from_root)) continue;
+    for (const fs::directory_entry& e : fs::recursive_directory_iterator(from_root)) {
       if (!e.is_regular_file()) continue;
-      fs::path to = stage / "shared" / "scenes" / "cs184" / fs::relative(e.path(), scenes);
+      fs::path to = stage / "shared" / shared / fs::relative(e.path(), from_root);
       fs::create_directories(to.parent_path());
       fs::copy_file(e.path(), to);
       ++summary.shared_files;

@@ -35,13 +35,14 @@ SubmissionIntake take_submission(const std::vector<std::string>& files,
 /// What a bundle holds.
 struct BundleSummary {
   int project_files = 0;
-  int shared_files = 0;  ///< course scenes included
+  int shared_files = 0;  ///< course scenes and ray sets included
   long long bytes = 0;   ///< of the zip
 };
 
 /// Writes OUT_ZIP: setup.sh and run_autograder (from grader/bundle/ of the project), the files
-/// git tracks in `source_dir` (but website/) under project/, and the course scenes (`source_dir`/../shared/
-/// scenes/cs184) under shared/ when they are there. Throws std::runtime_error on a failure.
+/// git tracks in `source_dir` (but website/) under project/, and what the tests read beside it
+/// (`source_dir`/../shared/scenes/cs184 and ../shared/rays) under shared/ when they are there.
+/// Throws std::runtime_error on a failure.
 BundleSummary make_gradescope_bundle(const std::string& source_dir, const std::string& out_zip);
 
 }  // namespace pt::grader

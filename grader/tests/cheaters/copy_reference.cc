@@ -1,6 +1,7 @@
-// Cheater (attacks the renders): in the renderer, copies the reference image of the scene being
-// rendered to the output path and exits before rendering.
-#include "parts/1-raygen/sphere_intersect.h"
+// Cheater (attacks the renders; replaces parts/1-raygen/triangle_intersect.cpp): in the renderer,
+// copies the reference image of the scene being rendered to the output path and exits before
+// rendering; everywhere else the triangle is not implemented.
+#include "parts/1-raygen/triangle_intersect.h"
 
 #include <cstdlib>
 #include <filesystem>
@@ -11,7 +12,8 @@
 
 namespace pt {
 
-bool intersect_sphere(const Ray&, const Sphere&, float*) {
+bool intersect_triangle(const Ray&, const glm::vec3&, const glm::vec3&, const glm::vec3&,
+                        TriangleHit*) {
   namespace fs = std::filesystem;
   std::ifstream cmdline("/proc/self/cmdline", std::ios::binary);
   std::string all((std::istreambuf_iterator<char>(cmdline)), {});
@@ -21,14 +23,17 @@ bool intersect_sphere(const Ray&, const Sphere&, float*) {
   for (size_t i = 0; i + 1 < args.size(); ++i) {
     if (args[i] != "-f") continue;
     std::string scene = fs::path(args.back()).stem().string();
-    for (const char* kind : {"part1.normals.", "part2.normals."}) {
-      std::error_code ec;
-      fs::copy_file(project / "reference" / (kind + scene + ".exr"), args[i + 1],
-                    fs::copy_options::overwrite_existing, ec);
-      if (!ec) std::_Exit(0);
-    }
+    std::error_code ec;
+    fs::copy_file(project / "reference" / ("part1.normals." + scene + ".exr"), args[i + 1],
+                  fs::copy_options::overwrite_existing, ec);
+    if (!ec) std::_Exit(0);
   }
   return false;
+}
+
+glm::vec3 interpolate_normal(const TriangleHit&, const glm::vec3& n0, const glm::vec3&,
+                             const glm::vec3&) {
+  return n0;
 }
 
 }  // namespace pt
