@@ -15,6 +15,7 @@
 #include "framework/image/estimate_exr.h"
 #include "framework/image/image.h"
 #include "framework/process/child_process.h"
+#include "framework/stats/variance_consistency.h"
 #include "grader/compare.h"
 
 namespace fs = std::filesystem;
@@ -49,6 +50,17 @@ fs::path scene_path(const RenderCheck& check, const GradeOptions& options) {
   fs::path root = options.source_dir;
   return check.course_scene ? root / ".." / "shared" / "scenes" / "cs184" / check.scene
                             : root / check.scene;
+}
+
+/// The variance check of a render: its own block size, and the sample count its flags ask for
+/// (`-s N`; with `-a`, adaptive, at most N).
+VarianceConsistencyOptions variance_options(const Manifest& manifest, const RenderCheck& check) {
+  VarianceConsistencyOptions o;
+  o.block_size = manifest.block_size;
+  for (size_t i = 0; i + 1 < check.args.size(); ++i)
+    if (check.args[i] == "-s") o.expected_count = std::atoi(check.args[i + 1].c_str());
+  for (const std::string& a : check.args) o.adaptive = o.adaptive || a == "-a" || a == "--adaptive";
+  return o;
 }
 
 /// The first failure a GoogleTest output reports (the file:line line and what follows), short.
@@ -104,8 +116,36 @@ std::string pathtracer_for(int part, const GradeOptions& options) {
 
 /// Runs part N's step tests through CTest (each its own process and time limit) and returns
 /// one check per test, in the order CTest reports them.
+/// Part N's trusted tests, each alone in the sandbox, judged by its sealed report (never by an
+/// exit code or printed lines). A skip is a failure here: the bundle has every course scene, so
+/// no test of the complete solution skips, and a skip must not shrink the denominator.
+std::vector<CheckResult> run_sealed_tests(int part, const PartSpec& spec,
+                                          const GradeOptions& options) {
+  std::vector<CheckResult> checks;
+  for (const TrustedTest& t : *options.trusted) {
+    if (t.part != part) continue;
+    SealedTest s = run_sealed_test(t.executable, t.gtest, *options.sandbox, spec.test_timeout);
+    CheckResult r;
+    r.kind = "test";
+    r.name = t.name;
+    r.seconds = s.seconds;
+    r.pass = s.status == SealedStatus::passed;
+    if (s.status == SealedStatus::skipped) {
+      r.output = "skipped, which counts as a failure here";
+    } else if (!r.pass) {
+      std::string f = first_failure(s.output);
+      r.output = relative_to(s.why == "failed" && !f.empty() ? f : s.why, options.source_dir);
+      std::string todo = not_implemented_lines(s.output);
+      if (!todo.empty()) r.output += "\n" + todo;
+    }
+    checks.push_back(r);
+  }
+  return checks;
+}
+
 std::vector<CheckResult> run_tests(int part, const PartSpec& spec, const GradeOptions& options,
                                    std::string* problem) {
+  if (options.sandbox && options.trusted) return run_sealed_tests(part, spec, options);
   std::vector<CheckResult> checks;
   fs::path junit = fs::absolute(options.out_dir) / ("part" + std::to_string(part) + "-tests.xml");
   fs::remove(junit);
@@ -274,10 +314,25 @@ CheckResult grade_render(const Manifest& manifest, const RenderCheck& check,
   fs::create_directories(options.out_dir);
   fs::path out = fs::absolute(options.out_dir) / (check.name + ".exr");
   fs::remove(out);
+  std::string scratch;
+  if (options.sandbox) {
+    // The render writes only in its scratch folder; the grader reads the file back only if the
+    // render made it there itself (not a link to a reference).
+    scratch = options.sandbox->make_scratch("render");
+    out = fs::path(scratch) / (check.name + ".exr");
+  }
   std::vector<std::string> argv = {pathtracer_for(check.part, options)};
   argv.insert(argv.end(), check.args.begin(), check.args.end());
   argv.insert(argv.end(), {"--seed", std::to_string(r.seed), "-f", out.string(), scene.string()});
-  ChildResult c = run_child(argv, check.timeout);
+  ChildResult c = options.sandbox ? run_child(argv, options.sandbox->options(scratch, check.timeout))
+                                  : run_child(argv, check.timeout);
+  struct ScratchCleanup {
+    const Sandbox* sandbox;
+    std::string dir;
+    ~ScratchCleanup() {
+      if (sandbox) sandbox->finish(dir);
+    }
+  } cleanup{options.sandbox, scratch};
   r.seconds = c.seconds;
   std::string todo = not_implemented_lines(c.output);
   if (!c.ok()) {
@@ -286,6 +341,13 @@ CheckResult grade_render(const Manifest& manifest, const RenderCheck& check,
     return r;
   }
   RenderEstimate render, ref;
+  if (options.sandbox) {
+    std::string not_its_own = check_scratch_output(out.string(), *options.sandbox);
+    if (!not_its_own.empty()) {
+      r.output = "the render's output is not used: " + not_its_own;
+      return r;
+    }
+  }
   try {
     render = read_estimate_exr(out.string());
   } catch (const std::exception& e) {
@@ -296,6 +358,15 @@ CheckResult grade_render(const Manifest& manifest, const RenderCheck& check,
     ref = read_estimate_exr(reference.string());
   } catch (const std::exception& e) {
     r.output = std::string("the reference cannot be read: ") + e.what();
+    return r;
+  }
+  VarianceConsistencyOptions plausibility = variance_options(manifest, check);
+  // The sample counts are checked where the student's renderer is not trusted (the bundle); a
+  // developer's own grading (and the grader's tests' stand-in renderer) may state any count.
+  if (!options.sandbox) plausibility.expected_count = 0;
+  VarianceConsistencyResult plausible = check_variance_consistency(render, ref, plausibility);
+  if (!plausible.pass) {
+    r.output = plausible.summary;
     return r;
   }
   BlockTestOptions bt;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "grader/manifest.h"
+#include "grader/sandbox.h"
 
 namespace pt::grader {
 
@@ -61,6 +62,11 @@ struct GradeOptions {
   bool isolated = false;
   bool isolated_separate = false;
   int64_t seed_offset = 0;    ///< every graded render uses seed + seed_offset
+  /// When set (the Gradescope bundle), the student's code runs in it: each test of `trusted`
+  /// alone, judged by its sealed report (grader/sandbox.h), and each render as its user in a
+  /// scratch folder, compared only if its variance is plausible. Else as the grader, by CTest.
+  const Sandbox* sandbox = nullptr;
+  const std::vector<TrustedTest>* trusted = nullptr;
 };
 
 /// Every step of `part`. Never throws for a student's failure: a crash, a hang or garbage is

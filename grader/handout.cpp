@@ -72,22 +72,30 @@ std::string strip_solution(const std::string& text, const std::string& path, int
   return out;
 }
 
+std::vector<std::string> tracked_files(const std::string& source_dir) {
+  ChildResult files = run_child({"git", "-C", fs::absolute(source_dir).string(), "ls-files", "-z"},
+                                60.0, {}, 64 << 20);
+  if (!files.ok())
+    throw std::runtime_error(source_dir + ": git ls-files " + files.describe() +
+                             " (the handout and the bundle are made from a git checkout)\n" +
+                             files.output);
+  std::vector<std::string> list;
+  std::string_view all = files.output;
+  for (size_t start = 0; start < all.size();) {
+    size_t end = all.find('\0', start);
+    if (end == std::string_view::npos) end = all.size();
+    if (end > start) list.emplace_back(all.substr(start, end - start));
+    start = end + 1;
+  }
+  return list;
+}
+
 HandoutSummary make_handout(const std::string& source_dir, const std::string& out_dir) {
   fs::path src = fs::absolute(source_dir), dst = fs::absolute(out_dir);
   if (fs::exists(dst) && !fs::is_empty(dst))
     throw std::runtime_error(out_dir + ": exists and is not empty; the handout needs a new folder");
-  ChildResult files = run_child({"git", "-C", src.string(), "ls-files", "-z"}, 60.0, {}, 64 << 20);
-  if (!files.ok())
-    throw std::runtime_error(source_dir + ": git ls-files " + files.describe() +
-                             " (the handout is made from a git checkout)\n" + files.output);
   HandoutSummary summary;
-  std::string_view list = files.output;
-  for (size_t start = 0; start < list.size();) {
-    size_t end = list.find('\0', start);
-    if (end == std::string_view::npos) end = list.size();
-    std::string rel(list.substr(start, end - start));
-    start = end + 1;
-    if (rel.empty()) continue;
+  for (const std::string& rel : tracked_files(source_dir)) {
     fs::path from = src / rel;
     if (!fs::is_regular_file(from)) continue;  // deleted in the work tree, or a submodule
     if (rel == "README.md") continue;  // the instructor's: the student's is written below

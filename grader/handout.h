@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace pt::grader {
 
@@ -23,6 +24,10 @@ bool in_solution_only_folder(const std::filesystem::path& root, const std::strin
 /// marker lines included, keeping the stub after it. Throws std::runtime_error naming `path`
 /// and the line of a marker without its pair. `blocks` counts the blocks removed.
 std::string strip_solution(const std::string& text, const std::string& path, int* blocks = nullptr);
+
+/// The files git tracks in `source_dir`, relative to it. Throws std::runtime_error when it is
+/// not a git checkout.
+std::vector<std::string> tracked_files(const std::string& source_dir);
 
 /// Copies the files git tracks in `source_dir` to `out_dir` (which must not exist yet or be
 /// empty), stripped as above. Throws std::runtime_error on any problem.

@@ -4,9 +4,12 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 
 #include <CLI/CLI.hpp>
 
+#include "grader/autograde.h"
+#include "grader/bundle.h"
 #include "grader/grade.h"
 #include "grader/handout.h"
 #include "grader/handout_guard.h"
@@ -69,7 +72,52 @@ int main(int argc, char** argv) {
   CLI::App* handout = app.add_subcommand("handout", "write the student handout to a new folder");
   handout->add_option("OUT_DIR", handout_dir, "the folder to create")->required();
   InstructorCommands instructor(app);  // mutants, false-failures, second-solution
+  // The Gradescope bundle (grader/bundle/, docs/grading.md "The Gradescope bundle").
+  std::string bundle_zip, autograde_root, autograde_parts;
+  CLI::App* gradescope = app.add_subcommand("gradescope", "write the Gradescope autograder zip");
+  gradescope->add_option("OUT_ZIP", bundle_zip, "the zip to write")->required();
+  CLI::App* setup = app.add_subcommand(
+      "autograde-setup", "(the bundle's setup.sh) record what grading trusts, protect it");
+  setup->add_option("--root", autograde_root, "the root folder (/autograder)")->required();
+  CLI::App* autograde_cmd = app.add_subcommand(
+      "autograde", "(the bundle's run_autograder) grade ROOT/submission into ROOT/results");
+  autograde_cmd->add_option("--root", autograde_root, "the root folder (/autograder)")->required();
+  autograde_cmd->add_option("--parts", autograde_parts, "only these parts, e.g. 1,3");
+  AutogradeTuning tuning;
+  double disk_mb = 0.0;
+  autograde_cmd->add_option("--max-check-seconds", tuning.max_check_seconds,
+                            "cap every test's and render's time (a test run of the bundle)");
+  autograde_cmd->add_option("--disk-mb", disk_mb, "the disk a check may fill (default 1024)");
   CLI11_PARSE(app, argc, argv);
+
+  if (*gradescope) {
+    try {
+      BundleSummary s = make_gradescope_bundle(options.source_dir, bundle_zip);
+      std::cout << "bundle " << bundle_zip << ": " << s.project_files << " project files, "
+                << s.shared_files << " course scene files, " << s.bytes / 1024 << " KiB\n";
+      return 0;
+    } catch (const std::exception& e) {
+      std::cerr << "grader gradescope: " << e.what() << "\n";
+      return 2;
+    }
+  }
+  if (*setup) {
+    try {
+      autograde_setup(autograde_root, fs::read_symlink("/proc/self/exe").string());
+      return 0;
+    } catch (const std::exception& e) {
+      std::cerr << "grader autograde-setup: " << e.what() << "\n";
+      return 2;
+    }
+  }
+  if (*autograde_cmd) {
+    std::vector<int> parts;
+    std::stringstream list(autograde_parts);
+    for (std::string p; std::getline(list, p, ',');)
+      if (!p.empty()) parts.push_back(std::atoi(p.c_str()));
+    tuning.disk_bytes = size_t(disk_mb * 1024 * 1024);
+    return autograde(autograde_root, parts, tuning);
+  }
 
   if (*handout) {
     try {

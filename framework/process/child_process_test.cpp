@@ -2,7 +2,19 @@
 // (the grader, the write-up's renders) goes on.
 #include "framework/process/child_process.h"
 
+#include <signal.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <gtest/gtest.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include "framework/testing/temp_folder.h"
 
 namespace pt {
 namespace {
@@ -71,6 +83,163 @@ TEST(FrameworkChildProcess, WorkingDirectoryIsUsed) {
   ChildResult r = run_child({"pwd"}, 5.0, "/");
   EXPECT_TRUE(r.ok());
   EXPECT_EQ(r.output, "/\n");
+}
+
+ChildOptions limited(double wall) {
+  ChildOptions o;
+  o.limits.wall_seconds = wall;
+  return o;
+}
+
+bool process_exists(pid_t pid) { return kill(pid, 0) == 0 || errno != ESRCH; }
+
+pid_t read_pid(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  long pid = 0;
+  in >> pid;
+  return pid_t(pid);
+}
+
+TEST(FrameworkChildProcess, ADescendantThatLeftTheGroupIsEndedWithTheChild) {
+  // setsid puts the grandchild in a session and group of its own, out of reach of a group kill;
+  // it would write a file after the check, but the keeper (a subreaper) ends it.
+  test::TempFolder dir("pt-child-setsid");
+  std::filesystem::path pid_file = dir.path() / "pid", late = dir.path() / "late";
+  std::string script = "setsid sh -c 'echo $$ > " + pid_file.string() + "; sleep 1; echo x > " +
+                       late.string() + "' & sleep 0.3; exit 0";
+  ChildResult r = run_child({"sh", "-c", script}, limited(20.0));
+  EXPECT_TRUE(r.ok()) << r.describe();
+  EXPECT_GE(r.descendants_killed, 1);
+  pid_t escaped = read_pid(pid_file);
+  ASSERT_GT(escaped, 0);
+  EXPECT_FALSE(process_exists(escaped)) << "pid " << escaped << " outlived its check";
+  std::this_thread::sleep_for(std::chrono::milliseconds(1300));
+  EXPECT_FALSE(std::filesystem::exists(late)) << "a leftover process wrote after the check";
+}
+
+TEST(FrameworkChildProcess, ADoubleForkedDaemonIsEndedToo) {
+  test::TempFolder dir("pt-child-daemon");
+  std::filesystem::path late = dir.path() / "late";
+  std::string script = "( ( sleep 1; echo x > " + late.string() + " ) & ) ; exit 0";
+  ChildResult r = run_child({"sh", "-c", script}, limited(20.0));
+  EXPECT_TRUE(r.ok()) << r.describe();
+  std::this_thread::sleep_for(std::chrono::milliseconds(1300));
+  EXPECT_FALSE(std::filesystem::exists(late));
+}
+
+TEST(FrameworkChildProcess, CpuTimeIsLimited) {
+  ChildOptions o = limited(30.0);
+  o.limits.cpu_seconds = 1.0;
+  ChildResult r = run_child({"sh", "-c", "while :; do :; done"}, o);
+  EXPECT_FALSE(r.ok());
+  EXPECT_FALSE(r.timed_out) << "the CPU limit, not the wall limit, must end it";
+  EXPECT_TRUE(r.signal == SIGXCPU || r.signal == SIGKILL) << r.describe();
+  EXPECT_LT(r.seconds, 15.0);
+}
+
+TEST(FrameworkChildProcess, AMemoryBombFailsAtTheAddressSpaceLimit) {
+  ChildOptions o = limited(60.0);
+  o.limits.address_space = size_t(256) << 20;
+  // The string doubles until an allocation fails.
+  ChildResult r = run_child({"awk", "BEGIN { s = \"x\"; while (1) s = s s }"}, o);
+  EXPECT_FALSE(r.ok()) << r.describe();
+  EXPECT_FALSE(r.timed_out);
+}
+
+TEST(FrameworkChildProcess, FileSizeIsLimited) {
+  test::TempFolder dir("pt-child-fsize");
+  std::filesystem::path big = dir.path() / "big";
+  ChildOptions o = limited(30.0);
+  o.limits.file_size = 1 << 20;
+  ChildResult r = run_child({"sh", "-c", "head -c 10000000 /dev/zero > " + big.string()}, o);
+  EXPECT_FALSE(r.ok()) << r.describe();
+  EXPECT_LE(std::filesystem::file_size(big), size_t(1) << 20);
+}
+
+TEST(FrameworkChildProcess, FillingTheDiskIsStopped) {
+  test::TempFolder dir("pt-child-disk");
+  ChildOptions o = limited(30.0);
+  o.limits.disk_bytes = 16 << 20;
+  o.limits.disk_watch = {dir.path().string()};
+  std::string script = "head -c 100000000 /dev/zero > " + (dir.path() / "fill").string() +
+                       "; sleep 20";
+  ChildResult r = run_child({"sh", "-c", script}, o);
+  EXPECT_FALSE(r.ok());
+  EXPECT_TRUE(r.disk_exceeded) << r.describe();
+  EXPECT_LT(r.seconds, 15.0);
+}
+
+TEST(FrameworkChildProcess, EnvironmentIsAdded) {
+  ChildOptions o = limited(10.0);
+  o.environment = {"PT_CHILD_TEST=hello", "HOME=/nonexistent-home"};
+  ChildResult r = run_child({"sh", "-c", "echo $PT_CHILD_TEST $HOME"}, o);
+  EXPECT_TRUE(r.ok());
+  EXPECT_EQ(r.output, "hello /nonexistent-home\n");
+}
+
+TEST(FrameworkChildProcess, AKilledKeeperIsAnUnknownStatusAndAFailure) {
+  // Only a child of our own user can do this (its parent is the keeper): no wait status comes
+  // back, and that must never read as success.
+  ChildResult r = run_child({"sh", "-c", "kill -9 $PPID; exit 0"}, limited(10.0));
+  EXPECT_FALSE(r.ok());
+  EXPECT_TRUE(r.unknown_status) << r.describe();
+}
+
+TEST(FrameworkChildProcess, TheTreeEndsWhenTheCallerDies) {
+  // A caller killed in the middle (a grader stopped by its own harness) takes its children's
+  // trees with it: the keeper sees its parent go and ends the tree.
+  test::TempFolder dir("pt-child-caller");
+  std::filesystem::path pid_file = dir.path() / "pid";
+  pid_t caller = fork();
+  if (caller == 0) {
+    run_child({"sh", "-c", "echo $$ > " + pid_file.string() + "; sleep 60"}, limited(120.0));
+    _exit(0);
+  }
+  for (int i = 0; i < 200 && read_pid(pid_file) == 0; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  pid_t child = read_pid(pid_file);
+  ASSERT_GT(child, 0);
+  kill(caller, SIGKILL);
+  waitpid(caller, nullptr, 0);
+  bool gone = false;
+  for (int i = 0; i < 300 && !gone; ++i) {
+    gone = !process_exists(child);
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  EXPECT_TRUE(gone) << "the child " << child << " outlived its caller";
+}
+
+TEST(FrameworkChildProcess, AnotherUserAndItsProcessLimit) {
+  if (geteuid() != 0) GTEST_SKIP() << "switching users needs root";
+  const long nobody = 65534;
+  ChildOptions o = limited(30.0);
+  o.uid = nobody;
+  o.gid = nobody;
+  ChildResult id = run_child({"id", "-u"}, o);
+  ASSERT_TRUE(id.ok()) << id.describe() << id.output;
+  EXPECT_EQ(id.output, "65534\n");
+  test::TempFolder dir("pt-child-user");
+  std::filesystem::path secret = dir.path() / "secret";
+  std::ofstream(secret) << "the answer";
+  std::filesystem::permissions(secret, std::filesystem::perms::owner_read |
+                                           std::filesystem::perms::owner_write);
+  ChildResult read = run_child({"cat", secret.string()}, o);
+  EXPECT_FALSE(read.ok());
+  EXPECT_EQ(read.output.find("the answer"), std::string::npos);
+  // A fork bomb stops at the process limit and is ended whole.
+  o.limits.processes = 16;
+  ChildResult bomb = run_child({"sh", "-c", "for i in $(seq 100); do sleep 20 & done; wait"}, o);
+  EXPECT_FALSE(bomb.timed_out);
+  EXPECT_LT(bomb.seconds, 25.0);
+}
+
+TEST(FrameworkChildProcess, SwitchingUserWithoutRootIsRefused) {
+  if (geteuid() == 0) GTEST_SKIP() << "root may switch";
+  ChildOptions o = limited(10.0);
+  o.uid = 65534;
+  ChildResult r = run_child({"true"}, o);
+  EXPECT_FALSE(r.started);
+  EXPECT_FALSE(r.ok());
 }
 
 }  // namespace

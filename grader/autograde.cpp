@@ -1,0 +1,314 @@
+#include "grader/autograde.h"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+#include <tuple>
+
+#include <nlohmann/json.hpp>
+
+#include "framework/text/text_file.h"
+#include "grader/bundle.h"
+#include "grader/grade.h"
+#include "grader/handout.h"
+#include "grader/manifest.h"
+#include "grader/report.h"
+
+namespace fs = std::filesystem;
+
+namespace pt::grader {
+namespace {
+
+void write_file(const fs::path& path, const std::string& text, fs::perms mode) {
+  fs::create_directories(path.parent_path());
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << text;
+  out.close();
+  if (!out) throw std::runtime_error(path.string() + ": cannot be written");
+  fs::permissions(path, mode);
+}
+
+/// Sets `dir`'s folders to `dirs` and its files to `files` (`executables` for files with an
+/// execute bit), links untouched.
+void set_modes(const fs::path& dir, fs::perms dirs, fs::perms files, fs::perms executables) {
+  auto apply = [&](const fs::path& p) {
+    struct stat st;
+    if (lstat(p.c_str(), &st) != 0 || S_ISLNK(st.st_mode)) return;
+    fs::perms mode = S_ISDIR(st.st_mode)       ? dirs
+                     : (st.st_mode & 0111) != 0 ? executables
+                                                : files;
+    chmod(p.c_str(), mode_t(mode));
+  };
+  apply(dir);
+  std::error_code ec;
+  for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+    apply(it->path());
+}
+
+std::vector<std::string> read_lines(const fs::path& path) {
+  std::vector<std::string> lines;
+  std::istringstream in(read_text_file(path));
+  for (std::string l; std::getline(in, l);)
+    if (!l.empty()) lines.push_back(l);
+  return lines;
+}
+
+std::vector<TrustedTest> read_trusted(const fs::path& path) {
+  nlohmann::json j = nlohmann::json::parse(read_text_file(path));
+  std::vector<TrustedTest> all;
+  for (const nlohmann::json& e : j) {
+    TrustedTest t;
+    t.name = e.at("name");
+    t.part = e.at("part");
+    t.step = e.at("step");
+    t.executable = e.at("executable");
+    t.gtest = e.at("gtest");
+    all.push_back(t);
+  }
+  return all;
+}
+
+std::string excerpt(const std::string& output, size_t lines = 15) {
+  std::vector<std::string> all, errors;
+  std::istringstream in(output);
+  for (std::string line; std::getline(in, line);) {
+    all.push_back(line);
+    if (line.find("error") != std::string::npos) errors.push_back(line);
+  }
+  const std::vector<std::string>& pick = errors.empty() ? all : errors;
+  std::string s;
+  for (size_t i = pick.size() > lines ? pick.size() - lines : 0; i < pick.size(); ++i)
+    s += "    " + pick[i] + "\n";
+  return s;
+}
+
+/// Builds part `part`'s grading target from the student's files, as the sandbox's user: the
+/// compiler, and the test listing CMake runs after a link, never run as root, so the student's
+/// code cannot read at build time what the grader protects (an #include or .incbin of a
+/// reference or of the solution fails). The tree is the student user's while it builds, the
+/// grader's (read-only to that user, files 0600, programs 0711) afterwards.
+/// Whether the student's build of a part succeeded, and its error excerpt when not.
+struct BuildOutcome {
+  bool ok = false;
+  std::string output;
+};
+
+BuildOutcome student_build(int part, const AutogradeLayout& L, const Sandbox& sandbox,
+                           double timeout) {
+  BuildOutcome r;
+  std::string target = "grade_part" + std::to_string(part);
+  if (read_text_file(L.build / "build.ninja").find(target + "_isolated") != std::string::npos)
+    target += "_isolated";
+  std::string scratch = sandbox.make_scratch("build");
+  ChildOptions o = sandbox.options(scratch, timeout);
+  o.limits.wall_seconds = timeout;  // the build's own limit, never a test run's cap
+  o.limits.cpu_seconds = timeout * 4 + 10;
+  o.limits.address_space = size_t(8) << 30;  // the compiler on CGAL's headers
+  o.limits.file_size = size_t(1) << 30;
+  o.limits.disk_bytes = size_t(4) << 30;
+  o.environment.push_back("CCACHE_DISABLE=1");
+  give_tree(L.build, sandbox.uid, sandbox.gid);
+  set_modes(L.build, fs::perms(0755), fs::perms(0644), fs::perms(0755));
+  ChildResult c = run_child({"cmake", "--build", L.build.string(), "--target", target, "-j2"}, o);
+  give_tree(L.build, 0, 0);
+  set_modes(L.build, fs::perms(0711), fs::perms(0600), fs::perms(0711));
+  sandbox.finish(scratch);
+  r.ok = c.ok();
+  if (!r.ok) {
+    // Paths as the student knows them: relative to the project.
+    std::string text = excerpt(c.output), prefix = L.project.string() + "/";
+    for (size_t at; (at = text.find(prefix)) != std::string::npos;) text.erase(at, prefix.size());
+    r.output = "your code did not build (the build " + c.describe() + "):\n" + text;
+  }
+  return r;
+}
+
+}  // namespace
+
+AutogradeLayout AutogradeLayout::under(const std::string& root) {
+  AutogradeLayout L;
+  L.root = fs::absolute(root);
+  L.project = L.root / "source" / "project";
+  L.submission = L.root / "submission";
+  L.results = L.root / "results" / "results.json";
+  L.build = L.project / "build";
+  L.private_dir = L.root / "pt" / "private";
+  L.scratch = L.root / "pt" / "scratch";
+  return L;
+}
+
+void give_tree(const fs::path& dir, long uid, long gid) {
+  if (uid < 0) return;
+  auto give = [&](const fs::path& p) {
+    if (lchown(p.c_str(), uid_t(uid), gid_t(gid)) != 0)
+      throw std::runtime_error("cannot give " + p.string() + " to user " + std::to_string(uid));
+  };
+  give(dir);
+  for (const fs::directory_entry& e : fs::recursive_directory_iterator(dir)) give(e.path());
+}
+
+std::vector<TrustedTest> list_part_tests(const fs::path& build_dir, int part) {
+  std::vector<TrustedTest> all;
+  for (const std::string label : {"part" + std::to_string(part) + "_isolated", "part" + std::to_string(part)}) {
+    ChildResult c = run_child({"ctest", "--test-dir", build_dir.string(), "--show-only=json-v1", "-L",
+                               "^" + label + "$"},
+                              120.0, {}, 64 << 20, ChildStreams::separate);
+    if (!c.ok()) throw std::runtime_error("ctest cannot list the tests of " + build_dir.string() + ": " + c.describe());
+    nlohmann::json j = nlohmann::json::parse(c.output);
+    for (const nlohmann::json& t : j.value("tests", nlohmann::json::array())) {
+      TrustedTest r;
+      r.name = t.value("name", "");
+      if (r.name.rfind("isolated.", 0) == 0) r.name = r.name.substr(9);
+      if (std::sscanf(r.name.c_str(), "part%d.step%d.", &r.part, &r.step) != 2) continue;
+      std::vector<std::string> command = t.value("command", std::vector<std::string>{});
+      if (command.empty()) continue;
+      r.executable = command[0];
+      for (const std::string& arg : command)
+        if (arg.rfind("--gtest_filter=", 0) == 0) r.gtest = arg.substr(15);
+      if (r.gtest.empty()) continue;
+      all.push_back(r);
+    }
+    if (!all.empty()) break;
+  }
+  return all;
+}
+
+void autograde_setup(const std::string& root, const std::string& grader_exe) {
+  AutogradeLayout L = AutogradeLayout::under(root);
+  fs::create_directories(L.private_dir);
+  std::vector<std::string> files = student_files(L.project.string());
+  if (files.empty()) throw std::runtime_error(L.project.string() + ": no student files (no BEGIN SOLUTION under parts/)");
+  std::string list;
+  for (const std::string& f : files) list += f + "\n";
+  write_file(L.student_list(), list, fs::perms(0600));
+  for (const std::string& f : files)
+    write_file(L.stubs() / f, strip_solution(read_text_file(L.project / f), f), fs::perms(0644));
+  // The test list of the complete solution, before any student code is built.
+  nlohmann::json tests = nlohmann::json::array();
+  Manifest manifest = read_manifest((L.project / "reference" / "manifest.json").string());
+  for (const PartSpec& spec : manifest.parts)
+    for (const TrustedTest& t : list_part_tests(L.build, spec.part))
+      tests.push_back({{"name", t.name}, {"part", t.part}, {"step", t.step},
+                       {"executable", t.executable}, {"gtest", t.gtest}});
+  write_file(L.test_list(), tests.dump(1) + "\n", fs::perms(0600));
+  fs::copy_file(grader_exe, L.grader(), fs::copy_options::overwrite_existing);
+  fs::permissions(L.grader(), fs::perms(0700));
+  // The tree keeps no solution the student's user can read: the stubs take the student files'
+  // place, solution-only files (the wide BVH) are the grader's alone.
+  for (const std::string& f : files) {
+    fs::remove(L.project / f);
+    fs::copy_file(L.stubs() / f, L.project / f);
+    fs::permissions(L.project / f, fs::perms(0644));
+  }
+  for (const fs::directory_entry& e : fs::recursive_directory_iterator(L.project)) {
+    std::string ext = e.path().extension().string();
+    if (e.is_regular_file() && (ext == ".cpp" || ext == ".h") &&
+        is_solution_only(read_text_file(e.path())))
+      fs::permissions(e.path(), fs::perms(0600));
+  }
+  // The references and the manifest: the grader's alone (the renders are compared by it).
+  set_modes(L.project / "reference", fs::perms(0700), fs::perms(0600), fs::perms(0600));
+  // The private folder: reachable (the build stats the solution copy's files, whose names are
+  // no secret), nothing in it readable but the stubs.
+  set_modes(L.private_dir, fs::perms(0755), fs::perms(0600), fs::perms(0700));
+  set_modes(L.stubs(), fs::perms(0755), fs::perms(0644), fs::perms(0644));
+  fs::permissions(L.private_dir, fs::perms(0711));
+  fs::create_directories(L.results.parent_path());
+  fs::permissions(L.results.parent_path(), fs::perms(0700));
+  fs::create_directories(L.scratch);
+  fs::permissions(L.scratch, fs::perms(0711));
+  std::cerr << "autograde-setup: " << files.size() << " student files, " << tests.size()
+            << " tests listed, private folder " << L.private_dir << "\n";
+}
+
+int autograde(const std::string& root, const std::vector<int>& parts,
+              const AutogradeTuning& tuning) {
+  auto start = std::chrono::steady_clock::now();
+  AutogradeLayout L = AutogradeLayout::under(root);
+  nlohmann::json results;
+  try {
+    std::vector<std::string> files = read_lines(L.student_list());
+    SubmissionIntake intake =
+        take_submission(files, L.submission.string(), L.project.string(), L.stubs().string());
+    Sandbox sandbox = Sandbox::standard(L.scratch.string(), 0);
+    sandbox.max_check_seconds = tuning.max_check_seconds;
+    if (tuning.disk_bytes > 0) sandbox.limits.disk_bytes = tuning.disk_bytes;
+    Manifest manifest = read_manifest((L.project / "reference" / "manifest.json").string());
+    std::vector<TrustedTest> trusted = read_trusted(L.test_list());
+    GradeOptions options;
+    options.source_dir = L.project.string();
+    options.build_dir = L.build.string();
+    options.manifest_path = (L.project / "reference" / "manifest.json").string();
+    options.pathtracer = (L.build / "app" / "pathtracer").string();
+    options.out_dir = (L.private_dir / "out").string();
+    options.build = false;  // built below, as the student's user
+    options.isolated = true;
+    options.isolated_separate = true;
+    options.sandbox = &sandbox;
+    options.trusted = &trusted;
+    std::vector<PartResult> all;
+    for (const PartSpec& spec : manifest.parts) {
+      if (!parts.empty() && std::find(parts.begin(), parts.end(), spec.part) == parts.end())
+        continue;
+      std::cerr << "autograde: part " << spec.part << ": building\n";
+      BuildOutcome built = student_build(spec.part, L, sandbox, spec.build_timeout);
+      if (built.ok) {
+        std::cerr << "autograde: part " << spec.part << ": grading\n";
+        all.push_back(grade_part(manifest, spec.part, options));
+      } else {
+        PartResult r;
+        r.part = spec.part;
+        r.built = false;
+        r.build_output = built.output;
+        for (const StepSpec& st : spec.steps) {
+          StepResult step;
+          step.part = spec.part;
+          step.step = st.step;
+          step.name = st.full_name();
+          step.max_score = st.points;
+          step.message = "not graded: " + built.output;
+          r.steps.push_back(step);
+        }
+        all.push_back(r);
+      }
+    }
+    double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    RunInfo info;
+    info.isolated = true;
+    info.seconds = seconds;
+    results = gradescope_results(all, info);
+    std::string protection =
+        sandbox.protects()
+            ? "Your code ran as an unprivileged user of its own, with limits."
+            : "UNPROTECTED: the grader did not run as root, so your code ran as the grader's own "
+              "user (a developer's run, not an official grade).";
+    results["output"] = results["output"].get<std::string>() + "\n" + intake.summary() + "\n" + protection;
+    results["extra_data"]["protected"] = sandbox.protects();
+    results["extra_data"]["taken"] = intake.taken;
+    results["extra_data"]["missing"] = intake.missing;
+    results["extra_data"]["refused"] = intake.refused;
+  } catch (const std::exception& e) {
+    results = {{"score", 0},
+               {"output", std::string("The autograder could not grade this submission: ") +
+                              e.what() + ". This is not a verdict on your code: please tell the "
+                              "course staff."},
+               {"tests", nlohmann::json::array()}};
+  }
+  try {
+    fs::create_directories(L.results.parent_path());
+    write_file(L.results, results.dump(2) + "\n", fs::perms(0600));
+  } catch (const std::exception& e) {
+    std::cerr << "autograde: " << e.what() << "\n";
+    return 2;
+  }
+  return 0;
+}
+
+}  // namespace pt::grader

@@ -1,0 +1,62 @@
+// What the Gradescope bundle's scripts run: `grader autograde-setup` once when the image is built
+// (after setup.sh built the instructor's tree), `grader autograde` once per submission. Both take
+// the root folder (/autograder on Gradescope), so the same bundle runs under any folder.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "grader/sandbox.h"
+
+namespace pt::grader {
+
+/// Where everything is under the root folder.
+struct AutogradeLayout {
+  std::filesystem::path root;        ///< /autograder
+  std::filesystem::path project;     ///< root/source/project: the instructor's tree
+  std::filesystem::path submission;  ///< root/submission: the student's upload
+  std::filesystem::path results;     ///< root/results/results.json
+  /// root/source/project/build: the build of the instructor's tree, where a developer's is, so
+  /// a compiler cache keyed on relative paths serves it (CI)
+  std::filesystem::path build;
+  std::filesystem::path private_dir; ///< root/pt/private: what grading trusts (0711, files 0600)
+  std::filesystem::path scratch;     ///< root/pt/scratch: the student processes' scratch folders
+
+  static AutogradeLayout under(const std::string& root);
+  std::filesystem::path solution() const { return private_dir / "solution"; }
+  std::filesystem::path stubs() const { return private_dir / "stubs"; }
+  std::filesystem::path grader() const { return private_dir / "grader"; }
+  std::filesystem::path student_list() const { return private_dir / "student_files.txt"; }
+  std::filesystem::path test_list() const { return private_dir / "tests.json"; }
+};
+
+/// The graded tests of part `part` in a build tree (label partN_isolated where the build has
+/// isolated targets, else partN; never the stress ones), from CTest's own list of the tests and
+/// their commands. Only on the complete solution's build, before any student code is built: a
+/// student's code runs at the discovery of its tests and could list anything.
+std::vector<TrustedTest> list_part_tests(const std::filesystem::path& build_dir, int part);
+
+/// After the instructor's tree is built: writes the student-file list, the stubs, the trusted
+/// test list and a copy of `grader_exe` to the private folder, puts the stubs in place of the
+/// solution in the tree, and sets the permissions that keep the references, the manifest, the
+/// solution and the results from the student's user. Throws std::runtime_error on a failure.
+void autograde_setup(const std::string& root, const std::string& grader_exe);
+
+/// Tighter limits for a test run of the bundle (CI's cheater cases); 0 keeps the standard ones.
+struct AutogradeTuning {
+  double max_check_seconds = 0.0;  ///< caps every test's and render's wall time
+  size_t disk_bytes = 0;           ///< the disk a check may fill
+};
+
+/// Grades root/submission into root/results/results.json: the intake, the student's build as
+/// the sandbox's user, then every part in `parts` (all when empty). Always writes the results
+/// (a submission that is missing files or does not compile gets a result that says so).
+/// Returns 0 when results were written.
+int autograde(const std::string& root, const std::vector<int>& parts,
+              const AutogradeTuning& tuning = {});
+
+/// Gives every file under `dir` (itself included, links not followed) to `uid`:`gid`.
+void give_tree(const std::filesystem::path& dir, long uid, long gid);
+
+}  // namespace pt::grader
