@@ -1,4 +1,4 @@
-// Part 1, step 3 (triangle): intersect_triangle, interpolate_normal; step 6 (watertight): the
+// Part 1, step 3 (triangle): intersect_triangle, interpolate_normal; step 5 (watertight): the
 // same intersect_triangle, watertight and above its own t error bound.
 #include "parts/1-raygen/triangle_intersect.h"
 
@@ -86,6 +86,10 @@ bool intersect_triangle(const Ray& ray, const glm::vec3& p0, const glm::vec3& p1
   // compute the three edge functions in 2D (recomputing them in double when one is exactly
   // zero), reject on mixed signs or a zero determinant, and only then divide to get t and the
   // barycentric coordinates. Check tmin < t < tmax before filling *hit.
+  // Step 5 (watertight) holds the same function to three more rules: a ray through a shared edge
+  // or vertex hits one of the two triangles; a hit counts only where t exceeds its own rounding
+  // error bound (pbrt-v4, 6.8.7), so a ray cannot hit the triangle it leaves; and no fixed
+  // epsilon, on the determinant or on t (grazing rays, tiny triangles, hits at t = 1e-6 are hits).
   PT_STUDENT_TODO("part 1", "intersect_triangle");
   (void)ray, (void)p0, (void)p1, (void)p2, (void)hit;
   return false;

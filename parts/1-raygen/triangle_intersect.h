@@ -1,5 +1,5 @@
 // Part 1, step 3 (triangle): where a ray meets a triangle, and the shading normal at the hit;
-// step 6 (watertight): the same test, watertight and above its own t error bound.
+// step 5 (watertight): the same test, watertight and above its own t error bound.
 #pragma once
 
 #include <glm/vec3.hpp>

@@ -72,7 +72,9 @@ glm::vec3 estimate_direct_importance(const LightingContext& ctx, const ShadingPo
   // ctx.light_samples. For each, ls = ctx.lights.sample(k, sp.hit, rng.next_2d()); skip it if
   // ls.pdf is 0 or wi = sp.frame.to_local(ls.wi) is below the surface; if
   // ctx.lights.unoccluded(ctx.query, spawn_shadow_ray(sp.hit, ls), k), add f·ls.L·cosθ/ls.pdf.
-  // Average each light's samples, sum over lights.
+  // Trace no shadow ray for a sample whose f or ls.L is zero (it can add nothing), and start
+  // every shadow ray with spawn_shadow_ray (a fixed epsilon of your own leaks light or makes
+  // acne). Average each light's samples, sum over lights.
   PT_STUDENT_TODO("part 3", "estimate_direct_importance");
   (void)ctx, (void)sp, (void)rng;
   return glm::vec3(0.0f);

@@ -25,14 +25,16 @@ glm::vec3 zero_bounce_radiance(const LightingContext& ctx, const Ray& ray, const
 
 /// Step 3 (hemisphere).
 /// Direct light reflected at `sp` towards the viewer, estimated with ctx.light_samples uniform
-/// directions of the hemisphere: what each direction's ray sees emitted (or the environment,
-/// when it escapes), times f·cosθ, divided by the density 1/2π.
+/// directions of the hemisphere: what each direction's ray (spawn_ray from the hit) sees emitted,
+/// its zero_bounce_radiance (or the environment, when it escapes), times f·cosθ, divided by the
+/// density 1/2π, averaged over the directions.
 glm::vec3 estimate_direct_hemisphere(const LightingContext& ctx, const ShadingPoint& sp, Rng& rng);
 
 /// Step 4 (importance).
 /// Direct light reflected at `sp`, estimated by sampling the lights: ctx.light_samples samples
-/// of each area light (one of a delta light), each unblocked sample's f·L·cosθ divided by its
-/// density and averaged per light.
+/// of each area light (exactly one of a delta light, whatever -l says), each unblocked sample's
+/// f·L·cosθ divided by its density and averaged per light. One shadow ray per sample, started
+/// with spawn_shadow_ray (no epsilon of your own) and none for a sample whose f or L is zero.
 glm::vec3 estimate_direct_importance(const LightingContext& ctx, const ShadingPoint& sp, Rng& rng);
 
 /// Step 5 (one_bounce).

@@ -25,7 +25,7 @@ bool pixel_converged(const IlluminanceStats& decision, long estimate_count, floa
 // on the decision samples, which are independent of them: conditioned on when it stops, that
 // mean is still a mean of independent samples, so its expectation is the pixel's true value.
 int sample_pixel_adaptive(const AdaptiveSettings& settings, const PixelSampleFn& next_sample,
-                          PixelStats* estimate) {
+                          PixelStats* estimate, const ConvergenceRule& converged) {
   // BEGIN SOLUTION
   const int batch = settings.batch < 1 ? 1 : settings.batch;
   IlluminanceStats decision;
@@ -38,17 +38,18 @@ int sample_pixel_adaptive(const AdaptiveSettings& settings, const PixelSampleFn&
       else
         estimate->add(L);
     }
-    if (pixel_converged(decision, estimate->count, settings.tolerance)) break;
+    if (converged(decision, estimate->count, settings.tolerance)) break;
   }
   return taken;
   // END SOLUTION
   // STUDENT: take samples in batches of settings.batch, each the radiance next_sample()
   // returns. Sample number `taken` (from 0) goes only into an IlluminanceStats of
   // decision samples when is_decision_sample(taken), otherwise only into *estimate. After each
-  // batch stop if pixel_converged(decision, estimate->count, ...) says so. Never take more than
+  // batch stop if converged(decision, estimate->count, settings.tolerance) says so (the rule you
+  // are handed: the renderer hands you your pixel_converged). Never take more than
   // settings.max_samples. Return how many samples you took, decision samples included.
   PT_STUDENT_TODO("part 5", "sample_pixel_adaptive");
-  (void)settings, (void)next_sample;
+  (void)settings, (void)next_sample, (void)converged;
   estimate->add(glm::vec3(0.0f));
   return 1;
 }

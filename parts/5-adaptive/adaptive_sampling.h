@@ -43,13 +43,20 @@ using PixelSampleFn = std::function<glm::vec3()>;
 /// whose decision samples are all equal (σ = 0) has converged, even a black one.
 bool pixel_converged(const IlluminanceStats& decision, long estimate_count, float tolerance);
 
+/// The stopping rule the loop asks after each batch, with pixel_converged's arguments: the
+/// renderer hands it pixel_converged (step 1); step 2's tests hand it a rule of their own, so the
+/// loop is graded apart from the rule.
+using ConvergenceRule =
+    std::function<bool(const IlluminanceStats& decision, long estimate_count, float tolerance)>;
+
 /// Step 2 (adaptive_loop).
 /// Samples a pixel in batches of settings.batch samples (each the radiance next_sample()
-/// returns), stopping after the first batch that leaves the pixel converged, or at
-/// settings.max_samples. Sample i goes into the decision statistics if is_decision_sample(i),
-/// else (its radiance) into *estimate, the pixel's value. Returns the number of samples taken,
-/// decision samples included.
+/// returns), stopping after the first whole batch after which converged(decision statistics,
+/// estimate->count, settings.tolerance) holds, or at settings.max_samples. Sample i (from 0)
+/// goes into the decision statistics (its illuminance) if is_decision_sample(i), else (its
+/// radiance) into *estimate, the pixel's value, never both. Returns the number of samples
+/// taken, decision samples included.
 int sample_pixel_adaptive(const AdaptiveSettings& settings, const PixelSampleFn& next_sample,
-                          PixelStats* estimate);
+                          PixelStats* estimate, const ConvergenceRule& converged);
 
 }  // namespace pt

@@ -4,8 +4,13 @@ namespace pt {
 
 int estimate_pixel_adaptive(const AdaptiveSettings& settings, const PixelSampleFn& next_sample,
                             PixelStats* stats) {
+  return estimate_pixel_adaptive(settings, next_sample, stats, pixel_converged);
+}
+
+int estimate_pixel_adaptive(const AdaptiveSettings& settings, const PixelSampleFn& next_sample,
+                            PixelStats* stats, const ConvergenceRule& converged) {
   const long before = stats->count;
-  const int taken = sample_pixel_adaptive(settings, next_sample, stats);
+  const int taken = sample_pixel_adaptive(settings, next_sample, stats, converged);
   const long kept_out = long(taken) - (stats->count - before);
   if (kept_out > 0) stats->decision_samples += kept_out;
   return taken;

@@ -17,6 +17,10 @@ namespace pt {
 int estimate_pixel_adaptive(const AdaptiveSettings& settings, const PixelSampleFn& next_sample,
                             PixelStats* stats);
 
+/// The same with the stopping rule `converged` in place of pixel_converged (step 2's tests).
+int estimate_pixel_adaptive(const AdaptiveSettings& settings, const PixelSampleFn& next_sample,
+                            PixelStats* stats, const ConvergenceRule& converged);
+
 /// Estimates pixel `px` like estimate_pixel, but adaptively: each sample is the radiance along
 /// camera_ray_through_pixel at a uniformly jittered offset (then a lens sample, for a thin
 /// lens), drawn from `rng`, as the pixel loop draws them.

@@ -3,7 +3,7 @@
 // Part 1 stress test: a million rays aimed exactly at shared edges and vertices of closed meshes
 // never leak (watertight_rays.h says how they are aimed), and the control that shows such rays
 // find the cracks of a test that is not watertight. The graded watertight step
-// (step6_watertight_test.cpp) shoots the same kind of rays, fewer of them.
+// (step5_watertight_test.cpp) shoots the same kind of rays, fewer of them.
 #include <gtest/gtest.h>
 
 #include <chrono>

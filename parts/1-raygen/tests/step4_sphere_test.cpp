@@ -31,6 +31,7 @@
 
 #include "framework/sampling/rng.h"
 #include "parts/1-raygen/sphere_intersect.h"
+#include "parts/1-raygen/tests/scene_queries.h"
 
 namespace pt {
 namespace {
@@ -215,6 +216,71 @@ TEST(sphere, nearest_root_inside_the_interval) {
   ray.o = glm::vec3(0, 0, 5);  // sphere behind the origin
   ray.d = glm::vec3(0, 0, 1);
   EXPECT_FALSE(intersect_sphere(ray, s, &t));
+}
+
+// --- The sphere inside a scene, through the given brute-force query (only spheres in it) -------
+
+/// Two unit spheres on the -z axis, centred at -6 and -4.5 (they overlap): primitive 0 has
+/// material 6, primitive 1 material 7.
+Scene sphere_stack() {
+  Scene s;
+  s.spheres.push_back(Sphere{glm::vec3(0, 0, -6), 1.0f, 6});
+  s.spheres.push_back(Sphere{glm::vec3(0, 0, -4.5f), 1.0f, 7});
+  return s;
+}
+
+TEST(sphere, brute_force_finds_the_nearest_of_overlapping_spheres) {
+  Scene s = sphere_stack();
+  BruteForce bf(s);
+  SurfaceHit hit;
+  Ray ray;  // from the origin down -z
+  ASSERT_TRUE(bf.intersect(ray, &hit));
+  EXPECT_FLOAT_EQ(hit.t, 3.5f) << "the nearer sphere's front is at t = 3.5: the far root?";
+  EXPECT_EQ(hit.primitive, 1u);
+  EXPECT_EQ(hit.material, 7u);
+  ray.tmin = 5.2f;  // inside both spheres: the far side of the nearer one at 5.5
+  ASSERT_TRUE(bf.intersect(ray, &hit)) << "from inside a sphere, its far side is a hit";
+  EXPECT_FLOAT_EQ(hit.t, 5.5f);
+  EXPECT_EQ(hit.primitive, 1u);
+  ray.tmin = 5.6f;  // inside the first sphere only: its far side at 7
+  ASSERT_TRUE(bf.intersect(ray, &hit)) << "from inside a sphere, its far side is a hit";
+  EXPECT_FLOAT_EQ(hit.t, 7.0f);
+  EXPECT_EQ(hit.primitive, 0u);
+  ray.tmin = 7.5f;
+  EXPECT_FALSE(bf.intersect(ray, &hit)) << "tmin = 7.5: both spheres are behind the interval";
+}
+
+TEST(sphere, occlusion_respects_the_interval) {
+  Scene s = sphere_stack();
+  BruteForce bf(s);
+  Ray ray;
+  ray.tmax = 3.49f;
+  EXPECT_FALSE(bf.occluded(ray)) << "tmax 3.49, the first sphere at t = 3.5";
+  ray.tmax = 3.51f;
+  EXPECT_TRUE(bf.occluded(ray));
+  ray.tmin = 7.01f, ray.tmax = 100.0f;
+  EXPECT_FALSE(bf.occluded(ray)) << "tmin 7.01, the last sphere's far side at t = 7";
+  ray.o = glm::vec3(50, 0, 0);  // beside everything
+  ray.tmin = 0.0f;
+  EXPECT_FALSE(bf.occluded(ray));
+}
+
+// The error box around every sphere hit point contains a point of the exact sphere (long double).
+TEST(sphere, hit_error_bounds_contain_the_exact_surface) {
+  test::expect_hit_error_bounds_contain_the_exact_surface(true);
+}
+
+// A sphere's normal points out, whichever side the ray comes from.
+TEST(sphere, normal_points_out_from_inside_too) {
+  Scene sp;
+  sp.spheres.push_back(Sphere{glm::vec3(0, 0, -5), 2.0f, 0});
+  Ray inside;
+  inside.o = glm::vec3(0, 0, -5);
+  inside.d = glm::vec3(0, 1, 0);
+  SurfaceHit hit;
+  ASSERT_TRUE(intersect_primitive(sp, 0, inside, &hit)) << "a ray from the centre must hit";
+  EXPECT_NEAR(glm::length(hit.n - glm::vec3(0, 1, 0)), 0.0f, 1e-6f);
+  EXPECT_NEAR(glm::length(hit.p - glm::vec3(0, 2, -5)), 0.0f, 1e-5f);
 }
 
 }  // namespace

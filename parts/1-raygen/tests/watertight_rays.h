@@ -1,5 +1,5 @@
 // Rays aimed exactly at shared edges and vertices of closed meshes, for the watertightness
-// checks of Part 1's triangle test (the graded step 6 and the long stress run).
+// checks of Part 1's triangle test (the graded step 5 and the long stress run).
 //
 // A closed mesh around a ray's origin must stop the ray. Aiming at a point of a shared edge (or
 // at a shared vertex) is the worst case: the ray passes within rounding error of two (or of a

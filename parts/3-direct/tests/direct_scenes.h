@@ -1,5 +1,7 @@
-// Scenes the Part 3 step tests share, each with a known answer, and direct light alone as a
-// renderer computes it (pipeline/3-direct: emission plus one_bounce_radiance, no Part 4).
+// Scenes the Part 3 step tests share, each with a known answer, and the step's own estimator
+// called on its own: the rig finds the hit (its exact ray query, not Parts 1-2) and shades it with
+// its own Lambertian (not the student's DiffuseBsdf of step 1), and no zero-bounce term or
+// one_bounce_radiance (steps 2 and 5) stands between the test and the estimator it grades.
 #pragma once
 
 #include <string>
@@ -10,16 +12,45 @@
 #include "framework/scene/collada_loader.h"
 #include "framework/testing/lighting_rig.h"
 #include "parts/3-direct/direct_lighting.h"
-#include "pipeline/3-direct/direct_integrator.h"
 
 namespace pt::test {
 
 /// Significance of each known-answer t-test.
 constexpr double kDirectAlpha = 0.001;
 
-/// Direct light only (Part 3's estimators, without Part 4): emission plus one_bounce_radiance.
-inline glm::vec3 direct_only(const LightingContext& ctx, const Ray& ray, Rng& rng) {
-  return estimate_direct_illumination(ctx, ray, rng);
+/// A hit of the rig's query, shaded with the rig's Lambertian in place of the student's.
+using RigPoint = ShadedByRig<ShadingPoint, DiffuseBsdf>;
+
+/// Direct light reflected towards `ray`'s origin at its first hit, by step 3's
+/// estimate_direct_hemisphere (`hemisphere`) or step 4's estimate_direct_importance alone: the
+/// emission the ray itself sees is not added. Zero when the ray hits nothing.
+inline glm::vec3 reflected_at_hit(const Rig& rig, bool hemisphere, const Ray& ray, Rng& rng) {
+  SurfaceHit hit;
+  if (!rig.query.intersect(ray, &hit)) return glm::vec3(0.0f);
+  const RigPoint p(rig.ctx.scene, ray, hit);
+  return hemisphere ? estimate_direct_hemisphere(rig.ctx, p.point, rng)
+                    : estimate_direct_importance(rig.ctx, p.point, rng);
+}
+
+/// The estimator reflected_at_hit calls, as sample_values wants it.
+inline Estimator direct_estimator(const Rig& rig, bool hemisphere) {
+  return [&rig, hemisphere](const Ray& r, Rng& g) { return reflected_at_hit(rig, hemisphere, r, g); };
+}
+
+/// What a known-answer test's failing ratio to the exact value means, for the estimator it
+/// graded taking `n` samples (ctx.light_samples).
+inline std::string estimator_hint(bool hemisphere, int n, double mean, double expected) {
+  const double dn = n;
+  if (hemisphere)
+    return ratio_hint(mean, expected,
+                      {{1.0 / (2.0 * M_PI), "each direction's f·L·cosθ not divided by its density 1/(2π)?"},
+                       {0.5, "a factor 2 lost: a uniform hemisphere direction's density is 1/(2π), not 1/π?"},
+                       {2.0, "twice: divided by 1/(4π), the whole sphere's density, not the hemisphere's 1/(2π)?"},
+                       {dn, "the samples summed, not averaged?"}});
+  return ratio_hint(mean, expected,
+                    {{dn, "each light's samples summed, not averaged?"},
+                     {1.0 / dn, "each light's sum divided by the sample count twice?"},
+                     {M_PI, "π times: the sample's f·L·cosθ without the BSDF's 1/π, or a density off by π?"}});
 }
 
 /// A diffuse unit sphere of albedo rho at the origin under a uniform sky of radiance L.
@@ -59,14 +90,13 @@ inline double floor_under_panel_light(bool hemisphere, int n = 400) {
   const uint32_t floor = add_material(s, glm::vec3(0.5f));
   add_quad(s, {-2, -2, 0}, {2, -2, 0}, {2, 2, 0}, {-2, 2, 0}, floor);
   Rig rig(s);
-  rig.ctx.hemisphere = hemisphere;
   Rng rng(11);
   double sum = 0.0;
   for (int i = 0; i < n; ++i) {
     Ray r;
     r.o = glm::vec3(0.1f, -0.1f, 0.5f);
     r.d = glm::vec3(0.0f, 0.0f, -1.0f);
-    sum += direct_only(rig.ctx, r, rng).x;
+    sum += reflected_at_hit(rig, hemisphere, r, rng).x;
   }
   return sum / n;
 }
@@ -93,40 +123,40 @@ inline Ray ray_at_plane(Rng& g) {
 inline void expect_sphere_under_sky_is_rho_times_l(bool hemisphere) {
   const float rho = 0.6f, L = 2.0f;
   Rig rig(sphere_under_sky(rho, L));
-  rig.ctx.hemisphere = hemisphere;
   rig.ctx.light_samples = 4;
-  auto xs = sample_values([&](const Ray& r, Rng& g) { return direct_only(rig.ctx, r, g); },
-                          ray_at_unit_sphere, 20000, 11);
+  auto xs = sample_values(direct_estimator(rig, hemisphere), ray_at_unit_sphere, 20000, 11);
   auto c = t_test_mean(xs, rho * L, kDirectAlpha);
-  EXPECT_TRUE(c.pass) << "mean " << c.mean << " ± " << c.stderr_ << ", expected " << rho * L;
+  EXPECT_TRUE(c.pass) << "mean " << c.mean << " ± " << c.stderr_ << ", expected " << rho * L
+                      << estimator_hint(hemisphere, 4, c.mean, rho * L);
 }
 
 /// A diffuse plane facing a uniform sky, seen from above: ρL as well (it sees only sky), by
 /// hemisphere or light sampling. Expects it within chance.
 inline void expect_plane_under_sky_is_rho_times_l(bool hemisphere) {
   Rig rig(plane_under_sky());
-  rig.ctx.hemisphere = hemisphere;
-  auto xs = sample_values([&](const Ray& r, Rng& g) { return direct_only(rig.ctx, r, g); },
-                          ray_at_plane, 20000, 5);
+  rig.ctx.light_samples = 2;
+  auto xs = sample_values(direct_estimator(rig, hemisphere), ray_at_plane, 20000, 5);
   auto c = t_test_mean(xs, 0.3 * 1.5, kDirectAlpha);
-  EXPECT_TRUE(c.pass) << "mean " << c.mean << " ± " << c.stderr_ << ", expected 0.45";
+  EXPECT_TRUE(c.pass) << "mean " << c.mean << " ± " << c.stderr_ << ", expected 0.45"
+                      << estimator_hint(hemisphere, 2, c.mean, 0.45);
 }
 
-/// The sum of 64 one_bounce_radiance samples at the point of the ceiling over the panel, seen
-/// from below, by hemisphere or light sampling (64 samples each).
+/// The sum of 64 estimates at the point of the ceiling over the panel, seen from below, by
+/// hemisphere or light sampling (64 samples each).
 inline glm::vec3 ceiling_over_panel_light(bool hemisphere) {
   Rig rig(panel_under_ceiling());
-  rig.ctx.hemisphere = hemisphere;
   rig.ctx.light_samples = 64;
   Ray up;
   up.o = glm::vec3(0.1f, 0.2f, 0.995f);
   up.d = glm::vec3(0.0f, 0.0f, 1.0f);
   SurfaceHit hit;
   if (!rig.query.intersect(up, &hit)) return glm::vec3(-1.0f);  // never: the ceiling is there
-  ShadingPoint sp(rig.ctx.scene, up, hit);
+  const RigPoint p(rig.ctx.scene, up, hit);
   Rng rng(5);
   glm::vec3 sum(0.0f);
-  for (int i = 0; i < 64; ++i) sum += one_bounce_radiance(rig.ctx, sp, rng);
+  for (int i = 0; i < 64; ++i)
+    sum += hemisphere ? estimate_direct_hemisphere(rig.ctx, p.point, rng)
+                      : estimate_direct_importance(rig.ctx, p.point, rng);
   return sum;
 }
 
@@ -162,21 +192,32 @@ inline Scene emitter_box() {
   return load_collada_string(kEmitterBoxDae, "emitter_box.dae", [](const std::string&) {});
 }
 
-/// Direct light inside the emitter box, by hemisphere or light sampling: exactly the radiance E,
-/// never E(1 + a). Expects it within chance.
+/// Inside the emitter box, by hemisphere or light sampling: the panels are emitters, which
+/// reflect nothing, so every estimate at them is exactly zero (the camera sees their E, never
+/// E(1 + a)). A test that zero is right proves nothing alone (a stub returns it), so the same box
+/// read as diffuse panels of albedo a, which do reflect, must give a·E (within chance).
 inline void expect_emitter_box_reflects_nothing(bool hemisphere) {
   const double E = EmitterBox::kRadiance, a = EmitterBox::kDiffuse;
   const Scene box = emitter_box();
   ASSERT_EQ(box.triangles.size(), 12u);
-  Rig rig(box);
-  rig.ctx.hemisphere = hemisphere;
+  {
+    Rig rig(box);
+    rig.ctx.light_samples = 4;
+    auto xs = sample_values(direct_estimator(rig, hemisphere), ray_from_inside, 400, 3);
+    for (double x : xs)
+      ASSERT_EQ(x, 0.0) << (hemisphere ? "hemisphere" : "importance")
+                        << ": an emitter panel reflects nothing (its BSDF is black)";
+  }
+  Scene reflecting = box;
+  for (Material& m : reflecting.materials) m.kind = MaterialKind::diffuse;
+  Rig rig(reflecting);
   rig.ctx.light_samples = 4;
-  auto xs = sample_values([&](const Ray& r, Rng& g) { return direct_only(rig.ctx, r, g); },
-                          ray_from_inside, 4000, 3);
-  auto c = t_test_mean(xs, E, kDirectAlpha);
-  EXPECT_TRUE(c.pass) << (hemisphere ? "hemisphere" : "importance") << ": mean " << c.mean
-                      << " ± " << c.stderr_ << ", expected E = " << E
-                      << " (E(1 + a) = " << E * (1 + a) << " if the panels reflected)";
+  auto xs = sample_values(direct_estimator(rig, hemisphere), ray_from_inside, 4000, 4);
+  auto c = t_test_mean(xs, a * E, kDirectAlpha);
+  EXPECT_TRUE(c.pass) << (hemisphere ? "hemisphere" : "importance")
+                      << ", panels read as diffuse (albedo a = " << a << ") in a box glowing E = "
+                      << E << ": mean " << c.mean << " ± " << c.stderr_ << ", expected a·E = "
+                      << a * E << estimator_hint(hemisphere, 4, c.mean, a * E);
 }
 
 /// CBcoil's panel and light disagree (disagreeing_panel_scene): the floor beside the panel, lit
@@ -188,10 +229,9 @@ inline void expect_floor_sees_the_panels_shape_with_its_lights_radiance(bool hem
   using P = DisagreeingPanel;
   const double expected = P::floor_radiance(0.4, 0.0);
   Rig rig(disagreeing_panel_scene());
-  rig.ctx.hemisphere = hemisphere;
   rig.ctx.light_samples = 4;
   auto xs = sample_values(
-      [&](const Ray& r, Rng& g) { return direct_only(rig.ctx, r, g); },
+      direct_estimator(rig, hemisphere),
       [](Rng&) {
         Ray r;
         r.o = glm::vec3(0.4f, 0.0f, 0.2f);
@@ -201,7 +241,8 @@ inline void expect_floor_sees_the_panels_shape_with_its_lights_radiance(bool hem
       hemisphere ? 40000 : 10000, 9);
   auto c = t_test_mean(xs, expected, kDirectAlpha);
   EXPECT_TRUE(c.pass) << (hemisphere ? "hemisphere" : "importance") << ": mean " << c.mean
-                      << " ± " << c.stderr_ << ", expected " << expected;
+                      << " ± " << c.stderr_ << ", expected " << expected
+                      << estimator_hint(hemisphere, 4, c.mean, expected);
 }
 
 }  // namespace pt::test

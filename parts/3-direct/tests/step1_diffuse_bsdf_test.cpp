@@ -11,6 +11,7 @@
 #include "framework/math/frame.h"
 #include "framework/sampling/chi2_test_util.h"
 #include "framework/sampling/rng.h"
+#include "framework/testing/lighting_rig.h"
 
 namespace pt {
 namespace {
@@ -45,8 +46,14 @@ TEST(diffuse_bsdf, sample_f_returns_f_draws_its_pdf_and_the_weight_averages_to_t
     glm::vec3 f = bsdf.sample_f(wo, rng.next_2d(), &wi, &pdf);
     sum += glm::dvec3(f * wi.z / pdf);
   }
-  EXPECT_NEAR(sum.x / n, 0.5, 1e-4);
-  EXPECT_NEAR(sum.y / n, 0.25, 1e-4);
+  const char* what = "the mean weight f·cosθ/pdf of sample_f's draws, which is the albedo";
+  EXPECT_NEAR(sum.x / n, 0.5, 1e-4)
+      << what << ": " << sum.x / n << " for albedo 0.5"
+      << test::ratio_hint(sum.x / n, 0.5,
+                          {{0.5, "f is albedo/(2π), not albedo/π?"},
+                           {M_PI, "f is the albedo itself, without the 1/π?"},
+                           {4.0 / 3.0, "cosine-weighted directions given the uniform density 1/(2π)? (theirs is cosθ/π)"}});
+  EXPECT_NEAR(sum.y / n, 0.25, 1e-4) << what << ": " << sum.y / n << " for albedo 0.25";
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 // Part 3, step 3 (hemisphere): direct light by uniform hemisphere sampling, against scenes whose
-// answer is known.
+// answer is known. Each test calls estimate_direct_hemisphere itself, at a hit the rig found and
+// shades with its own Lambertian; under a sky (the first two) it rests on nothing else, and where
+// its rays meet an emitter it rests on step 2's zero_bounce_radiance, which it calls for them.
 #include <gtest/gtest.h>
 
 #include "parts/3-direct/tests/direct_scenes.h"

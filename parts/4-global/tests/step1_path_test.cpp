@@ -1,20 +1,59 @@
-// Part 4, step 1 (path): a camera ray's radiance, the emission it sees plus what its hit sends
-// back after at least one bounce, and no more work than the depth asks for.
+// Part 4, step 1 (path): a camera ray's radiance is the emission it sees plus what its hit sends
+// back after at least one bounce. The bounces are step 2's: each check compares with the
+// student's own at_least_one_bounce_radiance on the same random numbers, so a bug of step 2 is on
+// both sides and costs this step nothing.
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
 
 #include "parts/4-global/tests/path_scenes.h"
 
 namespace pt {
 namespace {
 
-TEST(path, depth_one_samples_no_bounce) {
-  test::Rig rig(test::enclosure(0.5f, 1.0f));
-  rig.ctx.max_depth = 1;
+// Depth 0: the emission the camera sees and nothing else, with one ray.
+TEST(path, depth_zero_is_the_emission_seen) {
+  test::Rig rig(test::enclosure(0.5f, 1.5f));
+  rig.ctx.max_depth = 0;
   Rng rng(1);
   Ray r;
-  estimate_global_illumination(rig.ctx, r, rng);
-  EXPECT_EQ(rig.query.intersect_calls, 1) << "only the camera ray is traced";
-  EXPECT_EQ(rig.query.occluded_calls, rig.ctx.light_samples) << "and the light's shadow rays";
+  EXPECT_EQ(estimate_global_illumination(rig.ctx, r, rng), glm::vec3(1.5f))
+      << "depth 0 inside a box glowing 1.5: the light seen directly (zero_bounce_radiance)";
+  EXPECT_EQ(rig.query.intersect_calls, 1) << "only the camera ray is traced at depth 0";
+  EXPECT_EQ(rig.query.occluded_calls, 0) << "and no shadow ray";
+}
+
+// Depth 1 and more: zero_bounce_radiance at the hit plus at_least_one_bounce_radiance there at
+// depth 1; with --bounce K (ctx.only_bounce) the seen emission only for K = 0.
+TEST(path, adds_the_emission_seen_to_the_bounces_at_the_hit) {
+  test::Rig rig(test::enclosure(0.5f, 1.5f));
+  for (int only : {-1, 0, 1, 2}) {
+    for (int depth : {1, 3}) {
+      rig.ctx.max_depth = depth;
+      rig.ctx.only_bounce = only;
+      SCOPED_TRACE("-m " + std::to_string(depth) +
+                   (only >= 0 ? ", --bounce " + std::to_string(only) : std::string()));
+      for (uint64_t seed = 1; seed <= 4; ++seed) {
+        Rng a(seed), b(seed);
+        Rng g(seed, 3);
+        const Ray r = test::ray_from_inside(g);
+        const glm::vec3 seen = only <= 0 ? glm::vec3(1.5f) : glm::vec3(0.0f);
+        const glm::vec3 bounces = only == 0 ? glm::vec3(0.0f) : test::bounced_at_hit(rig.ctx, r, b);
+        const glm::vec3 got = estimate_global_illumination(rig.ctx, r, a);
+        const glm::vec3 want = seen + bounces;
+        for (int c = 0; c < 3; ++c)
+          ASSERT_NEAR(got[c], want[c], 1e-5f * std::max(1.0f, want[c]))
+              << "estimate_global_illumination must be the emission seen (" << seen.x
+              << ") plus at_least_one_bounce_radiance at the hit, depth 1 (" << bounces.x
+              << "), drawing the same random numbers"
+              << (std::abs(got[c] - bounces[c]) < 1e-5f * std::max(1.0f, want[c]) && seen[c] > 0
+                      ? ": the light seen directly (zero_bounce_radiance) is missing?"
+                      : "");
+      }
+    }
+  }
 }
 
 }  // namespace

@@ -1,29 +1,49 @@
-// Part 4, step 3 (russian_roulette): paths ended at random stay unbiased, to the known answers of
-// scenes that need a thousand bounces.
+// Part 4, step 3 (russian_roulette): paths ended at random stay unbiased, and they end. The
+// roulette is part of at_least_one_bounce_radiance, whose bounces are step 2's, so each check
+// compares the student's own estimate with roulette against the same estimate without it (a
+// bug of step 2 is in both and cancels), called at the hit the rig finds (not through step 1's
+// estimate_global_illumination).
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "parts/4-global/tests/path_scenes.h"
 
 namespace pt {
 namespace {
 
-TEST(russian_roulette, enclosure_converges_to_e_over_one_minus_rho) {
-  const double rho = 0.5, E = 1.0;
-  test::Rig rig(test::enclosure(float(rho), float(E)));
-  rig.ctx.max_depth = 1000;
+// With and without roulette, the same depth limit: the same mean. Depth 8 is deep enough that
+// the roulette (from the second bounce on) ends most paths before the limit.
+void expect_roulette_keeps_the_mean(const Scene& scene, bool hemisphere, uint64_t seed,
+                                    const std::string& what) {
+  test::Rig rig(scene);
+  rig.ctx.max_depth = 8;
+  rig.ctx.hemisphere = hemisphere;
+  rig.ctx.russian_roulette = false;
+  const auto off = test::sample_values(test::bounced(rig.ctx), test::ray_from_inside, 20000, seed);
   rig.ctx.russian_roulette = true;
-  test::expect_mean(test::sample_values(test::gi(rig.ctx), test::ray_from_inside, 20000, 3),
-                    E / (1 - rho), "Russian roulette, depth 1000");
-  rig.ctx.hemisphere = true;
-  test::expect_mean(test::sample_values(test::gi(rig.ctx), test::ray_from_inside, 20000, 5),
-                    E / (1 - rho), "hemisphere sampling, Russian roulette, depth 1000");
+  const auto on =
+      test::sample_values(test::bounced(rig.ctx), test::ray_from_inside, 20000, seed + 1);
+  double off_sum = 0;
+  for (double x : off) off_sum += x;
+  ASSERT_GT(off_sum, 0.0) << what << ": this check rests on step 2 (bounces): without roulette "
+                          << "at_least_one_bounce_radiance brought no light back";
+  const test::SameMean c = test::same_mean(on, off);
+  EXPECT_TRUE(c.pass) << what << ", with roulette against without: " << c.text
+                      << (c.x < c.y ? ": darker with roulette: a path that goes on with "
+                                      "probability q must have what it brings back divided by q?"
+                                    : ": brighter with roulette: divided by q more than once, or "
+                                      "where the path ended?");
 }
 
-// The design's known answer: a point light of intensity π at the centre of a unit sphere of
-// albedo 0.5, seen from inside, has radiance 1 (0.5 direct, doubled by interreflection).
-TEST(russian_roulette, point_light_inside_a_diffuse_sphere_gives_radiance_one) {
+TEST(russian_roulette, keeps_the_mean_in_a_glowing_enclosure) {
+  expect_roulette_keeps_the_mean(test::enclosure(0.5f, 1.0f), false, 3, "enclosure, light sampling");
+  expect_roulette_keeps_the_mean(test::enclosure(0.5f, 1.0f), true, 5, "enclosure, hemisphere sampling");
+}
+
+// A point light of intensity π at the centre of a unit sphere of albedo 0.5, seen from inside.
+TEST(russian_roulette, keeps_the_mean_of_a_point_light_inside_a_diffuse_sphere) {
   Scene s;
   uint32_t m = test::add_material(s, glm::vec3(0.5f));
   s.spheres.push_back(Sphere{glm::vec3(0.0f), 1.0f, m});
@@ -31,10 +51,32 @@ TEST(russian_roulette, point_light_inside_a_diffuse_sphere_gives_radiance_one) {
   l.kind = LightKind::point;
   l.radiance = glm::vec3(float(M_PI));
   s.lights.push_back(l);
+  expect_roulette_keeps_the_mean(s, false, 8, "point light in a sphere");
+}
+
+// A closed box of albedo 0.5 (dark: no light, so no shadow rays) with no depth limit worth the
+// name: every path must still end, after about two bounce rays (one always, then each further
+// one with probability q = 0.5, the throughput), and some go past the first.
+TEST(russian_roulette, ends_every_path) {
+  Scene s;
+  uint32_t m = test::add_material(s, glm::vec3(0.5f));
+  test::add_closed_cube(s, m);
   test::Rig rig(s);
   rig.ctx.max_depth = 1000;
-  test::expect_mean(test::sample_values(test::gi(rig.ctx), test::ray_from_inside, 20000, 8), 1.0,
-                    "point light in a sphere");
+  rig.ctx.russian_roulette = true;
+  const int n = 500;
+  Rng rng(9);
+  for (int i = 0; i < n; ++i) {
+    Ray r = test::ray_from_inside(rng);
+    test::bounced_at_hit(rig.ctx, r, rng);
+  }
+  const double rays = double(rig.query.intersect_calls - n) / n;  // each path's own first ray
+  EXPECT_GT(rays, 1.0) << "bounce rays per path: " << rays
+                       << " (with roulette from the second bounce on, about 2: one always, the "
+                          "next ones with probability q)";
+  EXPECT_LT(rays, 21.0) << "bounce rays per path: " << rays
+                        << " at depth limit 1000: paths do not end by roulette (q is at most "
+                           "0.95, so at most 20 on average)";
 }
 
 }  // namespace

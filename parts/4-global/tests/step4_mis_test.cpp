@@ -1,5 +1,6 @@
 // Part 4, step 4 (mis): the power heuristic on hand-computed cases, and direct light by light and
-// BSDF samples weighted by it stays unbiased along whole paths.
+// BSDF samples weighted by it is unbiased. estimate_direct_mis is called itself, at a hit the
+// rig found, shaded with the rig's Lambertian: no path (steps 1-3) and no student BSDF in it.
 #include <gtest/gtest.h>
 
 #include <limits>
@@ -23,14 +24,32 @@ TEST(mis, power_heuristic_on_hand_computed_cases) {
   EXPECT_FLOAT_EQ(power_heuristic(3, 0.7f, 2, 1.9f) + power_heuristic(2, 1.9f, 3, 0.7f), 1.0f);
 }
 
-TEST(mis, enclosure_converges_to_e_over_one_minus_rho) {
+/// Direct light by MIS at the first hit of `ray`, for sample_values.
+test::Estimator mis_at_hit(const test::Rig& rig) {
+  return [&rig](const Ray& ray, Rng& rng) {
+    SurfaceHit hit;
+    if (!rig.query.intersect(ray, &hit)) return glm::vec3(0.0f);
+    const test::RigPoint p(rig.ctx.scene, ray, hit);
+    return estimate_direct_mis(rig.ctx, p.point, rng);
+  };
+}
+
+const char* const kMisBias =
+    ": do a direction's weights over the two strategies sum to one (power_heuristic with each "
+    "strategy's count and density), and is each strategy's sum divided by its own count?";
+
+// Inside a closed box of albedo ρ glowing E everywhere, the direct light at a wall is ρE.
+TEST(mis, direct_light_in_a_glowing_enclosure_is_rho_times_e) {
   const double rho = 0.5, E = 1.0;
   test::Rig rig(test::enclosure(float(rho), float(E)));
-  rig.ctx.max_depth = 1000;
-  rig.ctx.russian_roulette = true;
-  rig.ctx.mis = true;
-  test::expect_mean(test::sample_values(test::gi(rig.ctx), test::ray_from_inside, 20000, 4),
-                    E / (1 - rho), "MIS, Russian roulette, depth 1000");
+  for (int l : {1, 3}) {
+    rig.ctx.light_samples = l;
+    auto c = test::t_test_mean(
+        test::sample_values(mis_at_hit(rig), test::ray_from_inside, 10000, 4 + l), rho * E,
+        test::kPathAlpha);
+    EXPECT_TRUE(c.pass) << "MIS, -l " << l << ": mean " << c.mean << " ± " << c.stderr_
+                        << ", expected ρE = " << rho * E << kMisBias;
+  }
 }
 
 // CBcoil's panel and light disagree (test::disagreeing_panel_scene): MIS's BSDF samples reach the
@@ -39,24 +58,79 @@ TEST(mis, enclosure_converges_to_e_over_one_minus_rho) {
 TEST(mis, sees_the_panels_shape_with_its_lights_radiance) {
   using P = test::DisagreeingPanel;
   test::Rig rig(test::disagreeing_panel_scene());
-  rig.ctx.mis = true;
   rig.ctx.light_samples = 4;
-  rig.ctx.max_depth = 1;
   auto floor_point = [](Rng&) {
     Ray r;
     r.o = glm::vec3(0.4f, 0.0f, 0.2f);
     r.d = glm::vec3(0.0f, 0.0f, -1.0f);
     return r;
   };
-  test::expect_mean(test::sample_values(test::gi(rig.ctx), floor_point, 10000, 12),
-                    P::floor_radiance(0.4, 0.0), "MIS, direct light on the floor");
+  auto c = test::t_test_mean(test::sample_values(mis_at_hit(rig), floor_point, 10000, 12),
+                             P::floor_radiance(0.4, 0.0), test::kPathAlpha);
+  EXPECT_TRUE(c.pass) << "MIS, direct light on the floor: mean " << c.mean << " ± " << c.stderr_
+                      << ", expected " << P::floor_radiance(0.4, 0.0) << kMisBias;
 }
 
-// The same room with a mirror floor: the camera sees the panel in the mirror with the light's
-// radiance under MIS too, as light sampling gives it.
-TEST(mis, a_mirror_shows_the_panel_with_its_lights_radiance) {
-  using P = test::DisagreeingPanel;
-  EXPECT_NEAR(test::panel_in_a_mirror(false, true).x, P::kLightRadiance, 1e-4f);
+// No light or BSDF sample counts at a mirror: zero, and nothing traced to find that out; the
+// diffuse floor of the same room is lit (a zero alone proves nothing).
+TEST(mis, a_mirror_gets_no_direct_light) {
+  Ray r;
+  r.o = glm::vec3(0.1f, 0.05f, 0.2f);
+  r.d = glm::vec3(0.0f, 0.0f, -1.0f);
+  for (MaterialKind kind : {MaterialKind::mirror, MaterialKind::diffuse}) {
+    test::Rig rig(test::disagreeing_panel_scene(kind));
+    rig.ctx.light_samples = 4;
+    SurfaceHit hit;
+    ASSERT_TRUE(rig.query.intersect(r, &hit));
+    const test::RigPoint p(rig.ctx.scene, r, hit);
+    rig.query.intersect_calls = rig.query.occluded_calls = 0;
+    Rng rng(2);
+    const glm::vec3 L = estimate_direct_mis(rig.ctx, p.point, rng);
+    if (kind == MaterialKind::mirror) {
+      EXPECT_EQ(L, glm::vec3(0.0f)) << "a mirror: no light sample can reach its one direction";
+      EXPECT_EQ(rig.query.intersect_calls + rig.query.occluded_calls, 0)
+          << "a mirror (is_delta()): nothing to trace";
+    } else {
+      EXPECT_GT(L.x, 0.0f) << "the diffuse floor under the panel got no direct light by MIS";
+    }
+  }
+}
+
+// MIS takes both kinds of sample: -l light samples per light and -l BSDF samples, one ray each
+// (a floor under one area light with a panel: every sample of either kind is usable). Part 3's
+// light sampling alone traces half as many.
+TEST(mis, takes_l_light_samples_and_l_bsdf_samples) {
+  Scene s;
+  const uint32_t white = test::add_material(s, glm::vec3(0.5f));
+  const uint32_t glow = test::add_material(s, glm::vec3(0.0f), glm::vec3(5.0f));
+  test::add_quad(s, {-0.5f, -0.5f, 0.99f}, {0.5f, -0.5f, 0.99f}, {0.5f, 0.5f, 0.99f},
+                 {-0.5f, 0.5f, 0.99f}, glow);  // the panel, facing down
+  test::add_quad(s, {-2, -2, 0}, {2, -2, 0}, {2, 2, 0}, {-2, 2, 0}, white);  // the floor
+  Light light;
+  light.kind = LightKind::area;
+  light.radiance = glm::vec3(5.0f);
+  light.position = glm::vec3(0.0f, 0.0f, 0.99f);
+  light.direction = glm::vec3(0.0f, 0.0f, -1.0f);
+  light.edge_u = glm::vec3(1.0f, 0.0f, 0.0f);
+  light.edge_v = glm::vec3(0.0f, 1.0f, 0.0f);
+  s.lights.push_back(light);
+  for (int l : {1, 4}) {
+    SCOPED_TRACE("-l " + std::to_string(l));
+    test::Rig rig(s);
+    rig.ctx.light_samples = l;
+    Ray r;
+    r.o = glm::vec3(0.1f, 0.2f, 0.5f);
+    r.d = glm::vec3(0.0f, 0.0f, -1.0f);
+    SurfaceHit hit;
+    ASSERT_TRUE(rig.query.intersect(r, &hit));
+    const test::RigPoint p(rig.ctx.scene, r, hit);
+    rig.query.intersect_calls = rig.query.occluded_calls = 0;
+    Rng rng(6);
+    EXPECT_GT(estimate_direct_mis(rig.ctx, p.point, rng).x, 0.0f);
+    EXPECT_EQ(rig.query.intersect_calls + rig.query.occluded_calls, 2 * l)
+        << "rays traced for one floor point under one area light: -l light samples (one shadow "
+           "ray each) and -l BSDF samples (one ray each); light sampling alone traces -l";
+  }
 }
 
 }  // namespace

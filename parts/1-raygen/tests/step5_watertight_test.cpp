@@ -1,9 +1,9 @@
-// Part 1, step 6 (watertight): intersect_triangle again, held to the two rules of its header that
+// Part 1, step 5 (watertight): intersect_triangle again, held to the two rules of its header that
 // the renders of later parts need and Part 1's own renders do not show: no ray slips through the
 // crack between two triangles (a ray aimed at a shared edge or vertex of a closed mesh hits one
 // of them, whatever the rounding), and no ray hits the triangle it starts on because of rounding
 // alone (a hit counts only where t exceeds its own error bound). A correct Möller–Trumbore test,
-// the one most courses teach, passes steps 3-5 and the renders, and loses these points only.
+// the one most courses teach, passes steps 3-4 and the renders, and loses these points only.
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
