@@ -25,24 +25,61 @@ double block_ratio(const BlockDifference& b) {
   return n ? sum / n : INFINITY;
 }
 
-/// A factor that a known mistake multiplies every pixel by, and what to look at.
+/// A factor that a known mistake multiplies every pixel by, what to look at, and the kinds of
+/// render whose estimator can make it (a hemisphere pdf only in a hemisphere render).
 struct KnownFactor {
   double factor;
   const char* hint;
+  bool hemisphere_only;
 };
 
 const KnownFactor kFactors[] = {
-    {0.5, "half as bright everywhere: is the pdf divided twice, or a factor 2 lost (the "
-          "hemisphere's pdf is 1/(2π))?"},
-    {2.0, "twice as bright everywhere: is a factor 2 counted twice, or the pdf of the "
-          "hemisphere taken as 1/(4π)?"},
+    {0.5, "half as bright everywhere: a factor 2 lost (the uniform hemisphere's pdf is 1/(2π), "
+          "not 1/π), or the diffuse BSDF's albedo/(2π) in place of albedo/π?", true},
+    {0.5, "half as bright everywhere: the diffuse BSDF's albedo/(2π) in place of albedo/π, or a "
+          "density counted twice?", false},
+    {2.0, "twice as bright everywhere: the hemisphere's pdf taken as 1/(4π), or a factor 2 "
+          "counted twice?", true},
+    {2.0, "twice as bright everywhere: a factor 2 counted twice, or the light counted both by "
+          "light sampling and where a ray meets the emitter?", false},
     {1.0 / kPi, "about 1/π as bright everywhere: is the diffuse BSDF's albedo/π divided by π "
-                "once more, or cos/pdf left out?"},
-    {kPi, "about π times too bright everywhere: did the diffuse BSDF forget its 1/π?"},
+                "once more, or cos/pdf left out?", false},
+    {kPi, "about π times too bright everywhere: did the diffuse BSDF forget its 1/π?", false},
     {1.0 / (2.0 * kPi), "about 1/(2π) as bright everywhere: is the division by the pdf left "
-                        "out (the uniform hemisphere's pdf is 1/(2π))?"},
-    {2.0 * kPi, "about 2π times too bright: is the pdf multiplied instead of divided?"},
+                        "out (the uniform hemisphere's pdf is 1/(2π))?", true},
+    {2.0 * kPi, "about 2π times too bright: is the hemisphere's pdf multiplied instead of "
+                "divided?", true},
 };
+
+/// Where a lit render is too bright in places only, what the kind of render can have wrong.
+const char* too_bright_in_places(const std::string& kind) {
+  if (kind == "direct")
+    return "too bright in places: light leaking past an occluder or through a thin gap: shadow "
+           "rays started with a fixed epsilon, or ending past the light? (start them with "
+           "spawn_shadow_ray, which stops short of the light by its error bound)";
+  if (kind == "hemisphere")
+    return "too bright in places: light leaking past an occluder: hemisphere rays started with a "
+           "fixed epsilon (use spawn_ray), or an emitter's back counted as glowing?";
+  if (kind == "adaptive")
+    return "too bright in places: is each pixel's value the mean of its estimate samples only "
+           "(the decision samples kept out), over their own count?";
+  return "too bright in places: is some light counted twice (emission added at every bounce as "
+         "well as by light sampling), or is light leaking past an occluder (a fixed shadow-ray "
+         "epsilon)?";
+}
+
+/// Where a lit render is too dark in places only, the same.
+const char* too_dark_in_places(const std::string& kind) {
+  if (kind == "direct" || kind == "hemisphere")
+    return "light is missing in places: are shadow rays blocked (one that hits the surface it "
+           "starts on, or a light's own panel taken for an occluder), or a light left out?";
+  if (kind == "adaptive")
+    return "light is missing in places: do pixels stop before their batch is done, or is the "
+           "value averaged over the wrong count?";
+  return "light is missing in places: is one kind of bounce left out (depth off by one, light "
+         "seen through a mirror), a path ended without dividing by its q, or are shadow rays "
+         "blocked?";
+}
 
 }  // namespace
 
@@ -99,6 +136,9 @@ std::string diagnose(const BlockTestResult& result, const std::string& kind) {
     const bool uniform = spread < 0.25 && (darker == 0 || brighter == 0);
     if (uniform && most_blocks) {
       for (const KnownFactor& k : kFactors) {
+        if (k.hemisphere_only != (kind == "hemisphere") && (k.factor == 0.5 || k.factor == 2.0))
+          continue;  // the same factor has a hint of each kind
+        if (k.hemisphere_only && kind != "hemisphere") continue;
         if (std::fabs(std::log(median / k.factor)) < 0.12) return k.hint;
       }
       char buf[200];
@@ -114,18 +154,15 @@ std::string diagnose(const BlockTestResult& result, const std::string& kind) {
       return buf;
     }
     if (darker > 0 && brighter == 0) {
-      char buf[260];
+      char buf[400];
       std::snprintf(buf, sizeof buf,
                     "too dark in %d of %d blocks by different amounts (%.0f%% to %.0f%% of the "
-                    "reference) while the rest match: light is missing in places; is the direct "
-                    "light (or one kind of bounce) left out, or are shadow rays blocked?",
-                    failing, result.blocks, sorted.front() * 100.0, sorted.back() * 100.0);
+                    "reference) while the rest match: %s",
+                    failing, result.blocks, sorted.front() * 100.0, sorted.back() * 100.0,
+                    too_dark_in_places(kind));
       return buf;
     }
-    if (brighter > 0 && darker == 0) {
-      return "too bright in places: is some light counted twice (emission added at every "
-             "bounce, or direct light added again by the next bounce)?";
-    }
+    if (brighter > 0 && darker == 0) return too_bright_in_places(kind);
   }
   return "too bright in some places and too dark in others: compare the diff image with the "
          "scene (wrong normals, a flipped direction, or light leaking through surfaces?).";

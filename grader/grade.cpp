@@ -281,6 +281,35 @@ std::string not_implemented_lines(const std::string& output) {
   return s;
 }
 
+std::string render_rests_on_line(const PartSpec& spec, const RenderCheck& check,
+                                 const std::vector<std::pair<int, int>>& tests_failed_of) {
+  if (check.rests_on_steps.empty())
+    return "This render runs only this step's functions (and earlier parts').";
+  std::string line = "This render also runs this part's step";
+  line += check.rests_on_steps.size() > 1 ? "s " : " ";
+  bool any_failing = false;
+  for (size_t i = 0; i < check.rests_on_steps.size(); ++i) {
+    const int k = check.rests_on_steps[i];
+    const StepSpec* st = nullptr;
+    for (const StepSpec& s : spec.steps)
+      if (s.step == k) st = &s;
+    line += i == 0 ? "" : i + 1 == check.rests_on_steps.size() ? " and " : ", ";
+    line += std::to_string(k) + " (" + (st ? st->name : std::string("?")) + ": ";
+    const auto [failed, counted] = k < int(tests_failed_of.size()) ? tests_failed_of[size_t(k)]
+                                                                   : std::make_pair(0, 0);
+    if (counted == 0)
+      line += "no checks ran";
+    else if (failed == 0)
+      line += "its checks pass";
+    else
+      line += std::to_string(failed) + " of " + std::to_string(counted) + " checks fail";
+    any_failing = any_failing || failed > 0 || counted == 0;
+    line += ")";
+  }
+  return line + (any_failing ? ": fix the failing step first, this render may fail for it."
+                             : ": their checks pass, so look first at this step's code.");
+}
+
 CheckResult grade_render(const Manifest& manifest, const RenderCheck& check,
                          const GradeOptions& options) {
   CheckResult r;
@@ -434,9 +463,22 @@ PartResult grade_part(const Manifest& manifest, int part, const GradeOptions& op
         result.unassigned.push_back(c.name);
     }
   }
+  // Each step's tests, as they stand before the renders: a failing render says the state of the
+  // earlier steps it rests on (a render belongs to the latest step it runs, docs/grading.md).
+  std::vector<std::pair<int, int>> tests_failed_of(spec->steps.size() + 1, {0, 0});
+  for (size_t k = 1; k < by_step.size(); ++k)
+    for (const CheckResult& c : by_step[k])
+      if (!c.skipped) {
+        ++tests_failed_of[k].second;
+        tests_failed_of[k].first += !c.pass;
+      }
   for (const StepSpec& st : spec->steps) {
-    for (const RenderCheck& check : st.renders)
-      by_step[size_t(st.step)].push_back(grade_render(manifest, check, options));
+    for (const RenderCheck& check : st.renders) {
+      CheckResult c = grade_render(manifest, check, options);
+      if (!c.pass && !c.skipped && options.run_tests)
+        c.output += "\n" + render_rests_on_line(*spec, check, tests_failed_of);
+      by_step[size_t(st.step)].push_back(std::move(c));
+    }
     StepResult r = score_step(st, std::move(by_step[size_t(st.step)]));
     if (!test_problem.empty() && r.counted() == 0) r.message = test_problem;
     result.steps.push_back(std::move(r));

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "grader/manifest.h"
@@ -72,6 +73,11 @@ struct GradeOptions {
 /// Every step of `part`. Never throws for a student's failure: a crash, a hang or garbage is
 /// that check's failure.
 PartResult grade_part(const Manifest& manifest, int part, const GradeOptions& options);
+
+/// The line a failing render's message ends with: the state of the earlier steps of its part it
+/// rests on (check.rests_on_steps), from their tests' {failed, counted} by step number.
+std::string render_rests_on_line(const PartSpec& spec, const RenderCheck& check,
+                                 const std::vector<std::pair<int, int>>& tests_failed_of);
 
 /// Renders one check as the grader does and compares it with its reference.
 CheckResult grade_render(const Manifest& manifest, const RenderCheck& check,

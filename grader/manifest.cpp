@@ -150,6 +150,15 @@ Manifest read_manifest(const std::string& path) {
           if (rj.contains("made")) r.checksum = optional(rj.at("made"), "crc32", std::string());
           if (r.seed == r.reference_seed)
             bad(path, rw, "the graded render must use other random numbers than its reference");
+          if (rj.contains("rests_on_steps")) {
+            r.rests_on_steps = field<std::vector<int>>(path, rw, rj, "rests_on_steps");
+            for (int k : r.rests_on_steps)
+              if (k < 1 || k >= st.step)
+                bad(path, rw, "rests_on_steps names earlier steps of the part only (1 to " +
+                                  std::to_string(st.step - 1) + ")");
+          } else {
+            for (int k = 1; k < st.step; ++k) r.rests_on_steps.push_back(k);
+          }
           st.renders.push_back(r);
         }
         p.steps.push_back(st);

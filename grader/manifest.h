@@ -29,6 +29,10 @@ struct RenderCheck {
   double noise_limit = 0.0;
   std::string reference;                ///< the reference EXR, relative to the project
   std::string checksum;                 ///< CRC-32 of the reference file, "" until it is made
+  /// The earlier steps of its part whose functions the render runs besides its own step's (the
+  /// manifest's `rests_on_steps`; every earlier step when it says nothing). A failing render's
+  /// message gives their state.
+  std::vector<int> rests_on_steps;
 };
 
 /// One step of a part: what the student writes in it, its points and its renders. Its tests

@@ -58,7 +58,7 @@ TEST_F(GraderCompare, ScaledBy095FailsAsSlightlyTooDark) {
 TEST_F(GraderCompare, PdfLeftOutFailsNamingThePdf) {
   // A uniform hemisphere estimator that forgets to divide by its pdf 1/(2π).
   Comparison c = compare_render(full_render(16, 6, float(1.0 / (2.0 * kPi))), reference_,
-                                options_, "direct", diff("pdf.png"));
+                                options_, "hemisphere", diff("pdf.png"));
   EXPECT_FALSE(c.pass);
   EXPECT_NE(c.message.find("pdf"), std::string::npos) << c.message;
   EXPECT_NE(c.message.find("1/(2π)"), std::string::npos) << c.message;
@@ -78,9 +78,27 @@ TEST_F(GraderCompare, MissingDirectLightFailsWhereLightIsDirect) {
   Comparison c = compare_render(indirect_only, reference_, options_, "direct", diff("direct.png"));
   EXPECT_FALSE(c.pass);
   EXPECT_NE(c.message.find("too dark"), std::string::npos) << c.message;
-  EXPECT_NE(c.message.find("direct light"), std::string::npos) << c.message;
+  EXPECT_NE(c.message.find("light is missing in places"), std::string::npos) << c.message;
+  EXPECT_NE(c.message.find("shadow rays blocked"), std::string::npos) << c.message;
   // Only the directly lit half differs.
   for (const BlockDifference& b : c.test.failing) EXPECT_LT(b.block_x, 5);
+}
+
+// A direct-light render has no next bounce: too bright in places is light leaking past an
+// occluder (a fixed shadow epsilon), never "counted again by the next bounce".
+TEST_F(GraderCompare, ADirectRenderTooBrightInPlacesNamesLightLeaking) {
+  RenderEstimate leaking = sample(
+      [](int x, int y) {
+        const glm::vec3 v = Truth::direct(x, y) + Truth::indirect(x, y);
+        return x < testing::kWidth / 3 ? 2.0f * v : v;
+      },
+      16, 14);
+  Comparison c = compare_render(leaking, reference_, options_, "direct", "");
+  EXPECT_FALSE(c.pass);
+  EXPECT_NE(c.message.find("leaking"), std::string::npos) << c.message;
+  EXPECT_NE(c.message.find("spawn_shadow_ray"), std::string::npos) << c.message;
+  EXPECT_EQ(c.message.find("next bounce"), std::string::npos) << c.message;
+  EXPECT_EQ(c.message.find("every bounce"), std::string::npos) << c.message;
 }
 
 TEST_F(GraderCompare, ANoisierRenderWithTheRightMeanFailsTheNoiseCheck) {

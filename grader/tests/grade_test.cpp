@@ -141,6 +141,33 @@ TEST_F(GraderGrade, TheEarlierPartsStateIsOneLine) {
             std::string::npos);
 }
 
+// A render belongs to the latest step it runs; when it fails, its message says how the earlier
+// steps of its part that it rests on stand (docs/grading.md), from their tests in this run.
+TEST(GraderRestsOn, AFailingRenderSaysHowTheStepsItRestsOnStand) {
+  PartSpec part;
+  part.part = 1;
+  for (const char* name : {"camera_ray", "pixel_loop", "triangle"}) {
+    StepSpec st;
+    st.part = 1;
+    st.step = int(part.steps.size()) + 1;
+    st.name = name;
+    part.steps.push_back(st);
+  }
+  RenderCheck render;
+  render.rests_on_steps = {1, 2};
+  // {failed, counted} by step number (index 0 unused).
+  const std::string failing = render_rests_on_line(part, render, {{0, 0}, {0, 3}, {2, 3}, {0, 4}});
+  EXPECT_NE(failing.find("1 (camera_ray: its checks pass)"), std::string::npos) << failing;
+  EXPECT_NE(failing.find("2 (pixel_loop: 2 of 3 checks fail)"), std::string::npos) << failing;
+  EXPECT_NE(failing.find("fix the failing step first"), std::string::npos) << failing;
+  const std::string passing = render_rests_on_line(part, render, {{0, 0}, {0, 3}, {0, 3}, {1, 4}});
+  EXPECT_NE(passing.find("their checks pass, so look first at this step's code"), std::string::npos)
+      << passing;
+  render.rests_on_steps.clear();
+  EXPECT_NE(render_rests_on_line(part, render, {}).find("only this step's functions"),
+            std::string::npos);
+}
+
 TEST_F(GraderGrade, AReferenceThatDoesNotMatchItsChecksumIsRefused) {
   std::ofstream(root_ / "reference" / "ref.exr", std::ios::app) << "tampered";
   Manifest m = read_manifest(options_.manifest_path);
