@@ -49,14 +49,16 @@ TEST(one_bounce, calls_the_estimator_the_settings_name) {
                                               : estimate_direct_importance(rig.ctx, p.point, b);
         any_light = any_light || expected != glm::vec3(0.0f);
         const glm::vec3 got = one_bounce_radiance(rig.ctx, p.point, a);
-        ASSERT_EQ(got, expected)
-            << "one_bounce_radiance must return " << name
+        ASSERT_TRUE(got == expected)
+            << "one_bounce_radiance returned (" << got.x << ", " << got.y << ", " << got.z
+            << ") where " << name << " returned (" << expected.x << ", " << expected.y << ", "
+            << expected.z << "): it must return " << name
             << "'s estimate (the same random numbers give the same value)"
             << (at_panel && got.x > expected.x
                     ? ": more at an emitter, whose own light is zero_bounce_radiance's, counted "
                       "once where it is seen, not again here?"
                     : "");
-        ASSERT_EQ(a.next_float(), b.next_float())
+        ASSERT_TRUE(a.next_float() == b.next_float())
             << "one_bounce_radiance drew other random numbers than " << name << " alone";
       }
     }
