@@ -1,5 +1,6 @@
 // Part 1, step 2 (pixel_loop): a pixel and a point in it to a camera ray; the pixel loop, where
-// its rays go and what it adds up.
+// its rays go and what it adds up. Where a ray went is read through the student's own camera
+// (step 1's generate_camera_ray), so only this step's mapping is graded here.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,12 +15,27 @@
 namespace pt {
 namespace {
 
-/// Film coordinates of a pinhole camera ray at the origin looking down -z (the inverse of the
-/// camera's projection), so a test can tell which point of the image a ray went through.
+/// Where a ray of the default camera (at the origin, looking down -z) meets the plane z = -1.
+glm::vec2 on_plane(const Ray& r) { return {r.d.x / -r.d.z, r.d.y / -r.d.z}; }
+
+/// The film point whose camera ray (by the student's own generate_camera_ray, step 1) has the
+/// direction of `r`: Newton's method on the map from film to the plane z = -1, differences for
+/// its derivative. The checks of this step use it instead of the camera's exact inverse, so that
+/// a bug of step 1 (a shifted or scaled field of view) is on both sides and costs step 1 only.
 glm::vec2 film_of(const Camera& cam, float aspect, const Ray& r) {
-  const float half_w = std::tan(0.5f * glm::radians(cam.hfov_degrees));
-  const float half_h = half_w / aspect;
-  return {0.5f * (r.d.x / -r.d.z / half_w + 1.0f), 0.5f * (r.d.y / -r.d.z / half_h + 1.0f)};
+  const glm::vec2 target = on_plane(r);
+  glm::vec2 f(0.5f);
+  auto at = [&](glm::vec2 g) { return on_plane(generate_camera_ray(cam, aspect, g, {0.5f, 0.5f})); };
+  for (int i = 0; i < 6; ++i) {
+    const float h = 1e-3f;
+    const glm::vec2 p = at(f), dx = (at(f + glm::vec2(h, 0)) - p) / h,
+                    dy = (at(f + glm::vec2(0, h)) - p) / h;
+    const float det = dx.x * dy.y - dx.y * dy.x;
+    if (!(std::abs(det) > 0.0f)) break;
+    const glm::vec2 e = target - p;
+    f += glm::vec2(e.x * dy.y - e.y * dy.x, dx.x * e.y - dx.y * e.x) / det;
+  }
+  return f;
 }
 
 TEST(pixel_loop, camera_ray_through_pixel_maps_the_offset_to_the_film) {
@@ -29,8 +45,8 @@ TEST(pixel_loop, camera_ray_through_pixel_maps_the_offset_to_the_film) {
     const Ray r = camera_ray_through_pixel(cam, px, offset, {0.5f, 0.5f});
     const glm::vec2 film((7.0f + offset.x) / 20, 1.0f - (2.0f + offset.y) / 10);
     const glm::vec2 f = film_of(cam, 2.0f, r);
-    EXPECT_NEAR(f.x, film.x, 1e-5f) << offset.x << "," << offset.y;
-    EXPECT_NEAR(f.y, film.y, 1e-5f) << offset.x << "," << offset.y;
+    EXPECT_NEAR(f.x, film.x, 1e-4f) << offset.x << "," << offset.y;
+    EXPECT_NEAR(f.y, film.y, 1e-4f) << offset.x << "," << offset.y;
     const Ray expect = generate_camera_ray(cam, 2.0f, film, {0.5f, 0.5f});
     EXPECT_NEAR(glm::length(r.d - expect.d), 0.0f, 1e-6f);
   }
@@ -51,8 +67,8 @@ TEST(pixel_loop, one_sample_goes_through_the_pixel_centre) {
   Ray expect = generate_camera_ray(cam, 2.0f, {7.5f / 20, 1.0f - 2.5f / 10}, {0.5f, 0.5f});
   EXPECT_NEAR(glm::length(rays[0].d - expect.d), 0.0f, 1e-6f);
   const glm::vec2 f = film_of(cam, 2.0f, rays[0]);
-  EXPECT_NEAR(f.x, 7.5f / 20, 1e-5f);
-  EXPECT_NEAR(f.y, 1.0f - 2.5f / 10, 1e-5f);
+  EXPECT_NEAR(f.x, 7.5f / 20, 1e-4f);
+  EXPECT_NEAR(f.y, 1.0f - 2.5f / 10, 1e-4f);
   EXPECT_EQ(stats.count, 1);
 }
 
@@ -69,7 +85,7 @@ TEST(pixel_loop, jittered_samples_stay_in_their_pixel) {
   estimate_pixel(cam, px, 4096, rng, record, &stats);
   ASSERT_EQ(films.size(), 4096u);
   const float x0 = 3.0f / 8, x1 = 4.0f / 8, y0 = 1.0f - 6.0f / 6, y1 = 1.0f - 5.0f / 6;
-  const float tol = 1e-5f;
+  const float tol = 1e-4f;
   glm::vec2 lo(1e9f), hi(-1e9f);
   for (const glm::vec2& f : films) {
     EXPECT_GE(f.x, x0 - tol);

@@ -110,12 +110,8 @@ TEST(split, big_and_small_mixed_sah_cost_below_midpoint) {
   const bool floor_alone = (a.is_leaf() && a.count == 1 && sah.order()[a.offset] == 0) ||
                            (b.is_leaf() && b.count == 1 && sah.order()[b.offset] == 0);
   EXPECT_TRUE(floor_alone) << "the big triangle was not separated from the small ones at the root";
-  // And the answers stay brute force's.
-  const test::Comparison r =
-      test::compare_with_brute_force(s, sah, test::random_rays(s, 2000, 5));
-  EXPECT_EQ(r.nearest_differ, 0u) << r.examples;
-  EXPECT_EQ(r.occluded_differ, 0u) << r.examples;
-  EXPECT_GT(r.hits, 0u);
+  // (Whether the tree's answers stay brute force's is the traversal's check, step 3: it runs the
+  // walk and the box test, which are not this step's.)
 }
 
 TEST(split, nodes_record_their_split_axis) {

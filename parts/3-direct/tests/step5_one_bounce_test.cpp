@@ -55,8 +55,8 @@ TEST(one_bounce, calls_the_estimator_the_settings_name) {
             << expected.z << "): it must return " << name
             << "'s estimate (the same random numbers give the same value)"
             << (at_panel && got.x > expected.x
-                    ? ": more at an emitter, whose own light is zero_bounce_radiance's, counted "
-                      "once where it is seen, not again here?"
+                    ? ": more at an emitter: its emission counted twice? (the light a surface "
+                      "emits is zero_bounce_radiance's, counted once where it is seen)"
                     : "");
         ASSERT_TRUE(a.next_float() == b.next_float())
             << "one_bounce_radiance drew other random numbers than " << name << " alone";

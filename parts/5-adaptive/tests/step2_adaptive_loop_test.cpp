@@ -100,7 +100,14 @@ TEST(adaptive_loop, stops_at_the_first_batch_where_the_rule_holds) {
     PixelStats stats;
     int taken =
         estimate_pixel_adaptive(AdaptiveSettings{max_samples, batch, float(tol)}, s.fn(), &stats, test_rule);
-    ASSERT_EQ(size_t(taken), expected) << "seed " << seed;
+    ASSERT_TRUE(size_t(taken) == expected)
+        << "seed " << seed << ": stopped after " << taken << " samples, where the rule first holds "
+        << "after " << expected
+        << (taken % batch != 0 && taken != max_samples
+                ? ": not at a batch boundary: is the rule checked after every sample?"
+                : ": at another batch: does *estimate hold the estimate samples only (a decision "
+                  "sample in it too makes its count, n_E, wrong), and the decision statistics the "
+                  "decision samples only?");
     Split split = split_stream(s.values, expected);
     ASSERT_EQ(size_t(stats.count), split.estimate.size()) << "seed " << seed;
     ASSERT_EQ(size_t(stats.decision_samples), split.decision.size()) << "seed " << seed;
