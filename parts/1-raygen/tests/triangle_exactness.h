@@ -159,7 +159,8 @@ inline void check(const Case& c, Tally* tally, const char* kind, double min_t = 
     if (strict_behind && !(tq > Q(r.tmin)) && float_hit) {
       if (++tally->behind <= 5)
         ADD_FAILURE() << kind << ": a hit at t=" << fh.t << " where the exact t is " << t
-                      << " (at or behind the origin)";
+                      << " (at or behind the origin): a t only rounding made, which must not "
+                         "count (report a hit only where t exceeds its own error bound)";
       return;
     }
     exact_hit = tq > Q(r.tmin) && (std::isinf(r.tmax) || tq < Q(r.tmax));
