@@ -18,6 +18,7 @@
 
 #include "framework/process/child_process.h"
 #include "framework/testing/temp_folder.h"
+#include "framework/testing/test_paths.h"
 #include "framework/text/text_file.h"
 #include "grader/bundle.h"
 #include "grader/report.h"
@@ -27,7 +28,7 @@ namespace fs = std::filesystem;
 namespace pt::grader {
 namespace {
 
-const fs::path kSource = PT_SOURCE_DIR;
+const fs::path kSource = pt::test::source_dir();
 const char* kSphereFile = "parts/1-raygen/sphere_intersect.cpp";
 
 /// One temporary root with the bundle set up in it, shared by every case.
