@@ -130,69 +130,78 @@ int grade_batch(const BatchOptions& options) {
   std::vector<nlohmann::json> results(names.size());
   std::atomic<size_t> next{0};
   std::mutex print;
-  auto lane = [&](int k) {
-    for (size_t i; (i = next++) < names.size();) {
-      const std::string& name = names[i];
-      nlohmann::json r;
+  auto grade_one = [&](size_t i, int k, bool again) {
+    const std::string& name = names[i];
+    nlohmann::json r;
+    try {
+      fs::path submission = trees / ("submission-" + name);
+      copy_tree(dir / name, submission);
+      fs::path tree = trees / ("tree-" + std::to_string(k));
+      if (side_by_side) {
+        copy_tree(pristine, tree);
+      } else {
+        copy_tree(pristine, L.project);  // one at a time: the tree itself, made fresh
+      }
+      fs::create_directories(out / name);
+      fs::permissions(out / name, fs::perms(0700));
+      fs::path file = out / name / "results.json";
+      fs::remove(file);
+      std::vector<std::string> argv = {options.grader_exe, "autograde", "--root", L.root.string(),
+                                       "--submission", submission.string(), "--results", file.string(),
+                                       "--slot", std::to_string(k * per_run), "--jobs",
+                                       std::to_string(per_run), "--build-jobs", std::to_string(per_run)};
+      if (side_by_side) argv.insert(argv.end(), {"--tree", tree.string()});
+      if (!options.parts.empty()) {
+        std::string list;
+        for (int p : options.parts) list += (list.empty() ? "" : ",") + std::to_string(p);
+        argv.insert(argv.end(), {"--parts", list});
+      }
+      if (options.tuning.max_check_seconds > 0)
+        argv.insert(argv.end(), {"--max-check-seconds", std::to_string(options.tuning.max_check_seconds)});
+      ChildOptions o;
+      o.limits.wall_seconds = 6 * 3600.0;  // the run's own limits bound it; this bounds the grader
+      o.limits.max_output = 256 << 10;
+      ChildResult c = run_child(argv, o);
+      std::error_code ec;
+      fs::remove_all(submission, ec);
+      if (side_by_side) fs::remove_all(tree, ec);
       try {
-        fs::path submission = trees / ("submission-" + name);
-        copy_tree(dir / name, submission);
-        fs::path tree = trees / ("tree-" + std::to_string(k));
-        if (side_by_side) {
-          copy_tree(pristine, tree);
-        } else {
-          copy_tree(pristine, L.project);  // one at a time: the tree itself, made fresh
-        }
-        fs::create_directories(out / name);
-        fs::permissions(out / name, fs::perms(0700));
-        fs::path file = out / name / "results.json";
-        fs::remove(file);
-        std::vector<std::string> argv = {options.grader_exe, "autograde", "--root", L.root.string(),
-                                         "--submission", submission.string(), "--results", file.string(),
-                                         "--slot", std::to_string(k * per_run), "--jobs",
-                                         std::to_string(per_run), "--build-jobs", std::to_string(per_run)};
-        if (side_by_side) argv.insert(argv.end(), {"--tree", tree.string()});
-        if (!options.parts.empty()) {
-          std::string list;
-          for (int p : options.parts) list += (list.empty() ? "" : ",") + std::to_string(p);
-          argv.insert(argv.end(), {"--parts", list});
-        }
-        if (options.tuning.max_check_seconds > 0)
-          argv.insert(argv.end(), {"--max-check-seconds", std::to_string(options.tuning.max_check_seconds)});
-        ChildOptions o;
-        o.limits.wall_seconds = 6 * 3600.0;  // the run's own limits bound it; this bounds the grader
-        o.limits.max_output = 256 << 10;
-        ChildResult c = run_child(argv, o);
-        std::error_code ec;
-        fs::remove_all(submission, ec);
-        if (side_by_side) fs::remove_all(tree, ec);
-        try {
-          r = nlohmann::json::parse(read_text_file(file));
-        } catch (const std::exception&) {
-          r = not_graded("the grader " + c.describe() + ": " + tail_lines(c.output, 3));
-          std::ofstream(file) << r.dump(2) << "\n";
-        }
-      } catch (const std::exception& e) {
-        r = not_graded(e.what());
-        std::error_code ec;
-        fs::create_directories(out / name, ec);
-        std::ofstream(out / name / "results.json") << r.dump(2) << "\n";
+        r = nlohmann::json::parse(read_text_file(file));
+      } catch (const std::exception&) {
+        r = not_graded("the grader " + c.describe() + ": " + tail_lines(c.output, 3));
+        std::ofstream(file) << r.dump(2) << "\n";
       }
-      double max = 0.0;
-      for (const nlohmann::json& t : r.value("tests", nlohmann::json::array())) max += t.value("max_score", 0.0);
-      {
-        std::lock_guard<std::mutex> lock(print);
-        char line[512];
-        std::snprintf(line, sizeof line, "%s: %g of %g points", name.c_str(), r.value("score", 0.0), max);
-        std::cout << line << (r.value("tests", nlohmann::json::array()).empty() ? " (not graded: see its results.json)" : "")
-                  << std::endl;
-      }
-      results[i] = r;
+    } catch (const std::exception& e) {
+      r = not_graded(e.what());
+      std::error_code ec;
+      fs::create_directories(out / name, ec);
+      std::ofstream(out / name / "results.json") << r.dump(2) << "\n";
     }
+    double max = 0.0;
+    for (const nlohmann::json& t : r.value("tests", nlohmann::json::array())) max += t.value("max_score", 0.0);
+    {
+      std::lock_guard<std::mutex> lock(print);
+      char line[512];
+      std::snprintf(line, sizeof line, "%s: %g of %g points", name.c_str(), r.value("score", 0.0), max);
+      std::cout << line << (r.value("tests", nlohmann::json::array()).empty() ? " (not graded: see its results.json)" : "")
+                << (again ? " (graded again alone)" : "") << std::endl;
+    }
+    results[i] = r;
   };
   std::vector<std::thread> threads;
-  for (int k = 0; k < jobs; ++k) threads.emplace_back(lane, k);
+  for (int k = 0; k < jobs; ++k)
+    threads.emplace_back([&, k] {
+      for (size_t i; (i = next++) < names.size();) grade_one(i, k, false);
+    });
   for (std::thread& t : threads) t.join();
+  // The disk limit watches free space, which runs side by side share: a submission with a check
+  // stopped for the disk may have paid for another's, so it is graded again alone, and only that
+  // grade counts.
+  if (jobs > 1) {
+    for (size_t i = 0; i < names.size(); ++i)
+      if (results[i].dump().find("wrote more to disk than it is allowed") != std::string::npos)
+        grade_one(i, 0, true);
+  }
 
   std::vector<BatchScore> rows;
   for (size_t i = 0; i < names.size(); ++i) {
