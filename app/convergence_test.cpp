@@ -16,6 +16,7 @@
 
 #include "framework/plot/convergence_plot.h"
 #include "framework/testing/temp_folder.h"
+#include "framework/testing/test_paths.h"
 
 namespace pt {
 namespace {
@@ -25,7 +26,7 @@ namespace fs = std::filesystem;
 class BenchConvergence : public ::testing::Test {
  protected:
   void SetUp() override {
-    options_.scene_path = std::string(PT_SOURCE_DIR) + "/scenes/cornell_spheres.dae";
+    options_.scene_path = std::string(pt::test::source_dir()) + "/scenes/cornell_spheres.dae";
     options_.out_dir = dir_;
     options_.width = 32;
     options_.height = 24;

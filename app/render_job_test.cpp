@@ -7,6 +7,7 @@
 
 #include "framework/geometry/counting_ray_query.h"
 #include "framework/scene/collada_loader.h"
+#include "framework/testing/test_paths.h"
 
 namespace pt {
 namespace {
@@ -19,7 +20,7 @@ struct Counted {
 /// Renders the project's Cornell box small through a counting query of its own, so the count the
 /// render reports can be compared with the calls the query really received.
 Counted render_cornell(RenderSettings settings) {
-  const Scene scene = load_collada(std::string(PT_SOURCE_DIR) + "/scenes/cornell_spheres.dae");
+  const Scene scene = load_collada(std::string(pt::test::source_dir()) + "/scenes/cornell_spheres.dae");
   settings.width = 24;
   settings.height = 18;
   settings.threads = 2;

@@ -15,6 +15,7 @@
 
 #include "framework/scene/camera_placement.h"
 #include "framework/scene/collada_loader.h"
+#include "framework/testing/test_paths.h"
 
 namespace pt {
 namespace {
@@ -55,14 +56,14 @@ void expect_agreement(const std::string& path) {
 
 class ProjectScene : public testing::TestWithParam<const char*> {};
 TEST_P(ProjectScene, StrategiesRenderOneImage) {
-  expect_agreement(std::string(PT_SOURCE_DIR) + "/scenes/" + GetParam() + ".dae");
+  expect_agreement(std::string(pt::test::source_dir()) + "/scenes/" + GetParam() + ".dae");
 }
 INSTANTIATE_TEST_SUITE_P(StrategyAgreement, ProjectScene, testing::ValuesIn(kProjectScenes),
                          [](const testing::TestParamInfo<const char*>& i) { return std::string(i.param); });
 
 class CourseScene : public testing::TestWithParam<const char*> {};
 TEST_P(CourseScene, StrategiesRenderOneImage) {
-  const std::string path = std::string(PT_SHARED_SCENES_DIR) + "/" + GetParam() + ".dae";
+  const std::string path = std::string(pt::test::shared_scenes_dir()) + "/" + GetParam() + ".dae";
   if (!fs::exists(path))
     GTEST_SKIP() << path << " is absent (the course scenes live beside the project, in "
                  << "../shared/scenes/cs184)";
@@ -78,7 +79,7 @@ INSTANTIATE_TEST_SUITE_P(StrategyAgreement, CourseScene, testing::ValuesIn(kCour
 // A scene added to the project is checked too: the list above names every committed scene.
 TEST(StrategyAgreement, EveryProjectSceneIsChecked) {
   std::set<std::string> listed(std::begin(kProjectScenes), std::end(kProjectScenes)), found;
-  for (const fs::directory_entry& e : fs::directory_iterator(std::string(PT_SOURCE_DIR) + "/scenes"))
+  for (const fs::directory_entry& e : fs::directory_iterator(std::string(pt::test::source_dir()) + "/scenes"))
     if (e.path().extension() == ".dae") found.insert(e.path().stem().string());
   EXPECT_EQ(found, listed);
 }
@@ -88,7 +89,7 @@ TEST(StrategyAgreement, EveryProjectSceneIsChecked) {
 // its panel's emission taken away, so its area light has no panel) leaves hemisphere sampling
 // out and says why, rather than compare what cannot agree.
 TEST(StrategyAgreement, AScaledRenderIsFoundToDiffer) {
-  Scene scene = load_collada(std::string(PT_SOURCE_DIR) + "/scenes/cornell_spheres.dae");
+  Scene scene = load_collada(std::string(pt::test::source_dir()) + "/scenes/cornell_spheres.dae");
   centre_camera_on(scene.bounds(), &scene.camera);
   AgreementOptions o = small_renders();
   o.samples = 64;

@@ -9,8 +9,14 @@ if(PT_BUILD_TESTS)
   include(GoogleTest)
   # Every test executable's main, compiled once: GoogleTest's, plus the sealed report the grader
   # reads outcomes from (framework/testing/sealed_report_main.cpp).
-  add_library(pt_test_main OBJECT ${PROJECT_SOURCE_DIR}/framework/testing/sealed_report_main.cpp)
+  # It also holds the tree's paths (framework/testing/test_paths.h): the one object that names
+  # them, so that the tests' own objects are the same in every tree and a compiler cache shares them.
+  add_library(pt_test_main OBJECT ${PROJECT_SOURCE_DIR}/framework/testing/sealed_report_main.cpp
+    ${PROJECT_SOURCE_DIR}/framework/testing/test_paths.cpp)
+  target_include_directories(pt_test_main PRIVATE ${PROJECT_SOURCE_DIR})
   target_link_libraries(pt_test_main PUBLIC GTest::gtest)
+  set_source_files_properties(${PROJECT_SOURCE_DIR}/framework/testing/test_paths.cpp PROPERTIES
+    COMPILE_DEFINITIONS "PT_TEST_SOURCE_DIR=\"${PROJECT_SOURCE_DIR}\";PT_TEST_BINARY_DIR=\"${PROJECT_BINARY_DIR}\"")
 endif()
 
 # pt_add_library_in(NAME lib DIR dir LIBS dep ... [EXCLUDE regex ...]): a static library of every
@@ -62,11 +68,6 @@ function(pt_add_test)
     find_package(CGAL REQUIRED)
     target_link_libraries(${T_NAME} PRIVATE CGAL::CGAL)
   endif()
-  target_compile_definitions(${T_NAME} PRIVATE
-    PT_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
-    PT_SHARED_SCENES_DIR="${PROJECT_SOURCE_DIR}/../shared/scenes/cs184"
-    PT_SHARED_RAYS_DIR="${PROJECT_SOURCE_DIR}/../shared/rays"
-    PT_BINARY_DIR="${PROJECT_BINARY_DIR}")
   gtest_discover_tests(${T_NAME}
     TEST_PREFIX "${T_PREFIX}"
     PROPERTIES LABELS "${T_LABELS}" TIMEOUT ${T_TIMEOUT}

@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config git
+  ccache                # a second tree of the same sources (the handout's round trip) reuses objects
   libglm-dev            # vector maths
   libopenimageio-dev openimageio-tools   # PNG/EXR output, image diffs
   libcgal-dev libgmp-dev libmpfr-dev     # exact kernel for the intersection tests

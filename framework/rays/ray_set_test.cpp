@@ -1,5 +1,6 @@
 // Ray set files: what is written reads back bit for bit, and broken files are refused by name.
 #include "framework/rays/ray_set.h"
+#include "framework/testing/test_paths.h"
 
 #include <cstdio>
 #include <fstream>
@@ -13,7 +14,7 @@ namespace pt {
 namespace {
 
 std::string temp_path(const std::string& name) {
-  return std::string(PT_BINARY_DIR) + "/ray_set_test_" + name;
+  return std::string(pt::test::binary_dir()) + "/ray_set_test_" + name;
 }
 
 TEST(RaySetFile, RaysAndHitsRoundTrip) {

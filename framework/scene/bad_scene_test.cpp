@@ -10,6 +10,7 @@
 #include "framework/scene/collada_loader.h"
 #include "framework/scene/scene_error.h"
 #include "framework/testing/scene_error_of.h"
+#include "framework/testing/test_paths.h"
 
 namespace pt {
 namespace {
@@ -64,7 +65,7 @@ TEST(FrameworkBadScene, TheValidBaseSceneLoads) {
 }
 
 TEST(FrameworkBadScene, MissingFile) {
-  std::string path = std::string(PT_BINARY_DIR) + "/no-such-scene.dae";
+  std::string path = std::string(pt::test::binary_dir()) + "/no-such-scene.dae";
   try {
     load_collada(path);
     FAIL() << "loaded a file that does not exist";
@@ -77,7 +78,7 @@ TEST(FrameworkBadScene, MissingFile) {
 
 TEST(FrameworkBadScene, DirectoryInsteadOfFile) {
   try {
-    load_collada(PT_BINARY_DIR);
+    load_collada(pt::test::binary_dir());
     FAIL() << "loaded a directory";
   } catch (const SceneError& e) {
     EXPECT_MENTIONS(std::string(e.what()), "directory");
@@ -86,7 +87,7 @@ TEST(FrameworkBadScene, DirectoryInsteadOfFile) {
 
 TEST(FrameworkBadScene, FileOnDiskWithLineNumber) {
   // Through a real file, so that load_collada's own reading is on the path.
-  std::string path = std::string(PT_BINARY_DIR) + "/bad_scene_test_nan.dae";
+  std::string path = std::string(pt::test::binary_dir()) + "/bad_scene_test_nan.dae";
   std::string xml = scene_with("0 0 0 1 0 0 0 nan 0 1 1 0");
   std::ofstream(path) << xml;
   try {

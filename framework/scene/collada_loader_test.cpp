@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include "framework/scene/scene_error.h"
+#include "framework/testing/test_paths.h"
 
 namespace pt {
 namespace {
@@ -101,11 +102,11 @@ const CourseScene kCourseScenes[] = {
     {"sky/bunny.dae", 33696, 0, {LightKind::ambient}, 49.13434f, 1.333333f, {{MaterialKind::diffuse, 2}}, 0},
 };
 
-std::string course_path(const char* rel) { return std::string(PT_SHARED_SCENES_DIR) + "/" + rel; }
+std::string course_path(const char* rel) { return std::string(pt::test::shared_scenes_dir()) + "/" + rel; }
 
 TEST(FrameworkColladaLoader, CourseScenesLoadWithKnownCounts) {
-  if (!fs::exists(PT_SHARED_SCENES_DIR))
-    GTEST_SKIP() << "the course scenes are not at " << PT_SHARED_SCENES_DIR
+  if (!fs::exists(pt::test::shared_scenes_dir()))
+    GTEST_SKIP() << "the course scenes are not at " << pt::test::shared_scenes_dir()
                  << " (they live beside the project, in ../shared/scenes/cs184)";
   for (const CourseScene& want : kCourseScenes) {
     SCOPED_TRACE(want.path);
@@ -148,8 +149,8 @@ TEST(FrameworkColladaLoader, CourseScenesLoadWithKnownCounts) {
 }
 
 TEST(FrameworkColladaLoader, CourseAreaLightAndSpheresArePlacedByTheirNodes) {
-  if (!fs::exists(PT_SHARED_SCENES_DIR))
-    GTEST_SKIP() << "the course scenes are not at " << PT_SHARED_SCENES_DIR;
+  if (!fs::exists(pt::test::shared_scenes_dir()))
+    GTEST_SKIP() << "the course scenes are not at " << pt::test::shared_scenes_dir();
   Scene s = load_collada(course_path("sky/CBspheres.dae"));
   // <node id="Area">: matrix diag(0.6, 0.8, 1) with translation z = 1.49.
   ASSERT_EQ(s.lights.size(), 1u);
@@ -170,8 +171,8 @@ TEST(FrameworkColladaLoader, CourseAreaLightAndSpheresArePlacedByTheirNodes) {
 }
 
 TEST(FrameworkColladaLoader, CourseMeshesShareCornersBitForBit) {
-  if (!fs::exists(PT_SHARED_SCENES_DIR))
-    GTEST_SKIP() << "the course scenes are not at " << PT_SHARED_SCENES_DIR;
+  if (!fs::exists(pt::test::shared_scenes_dir()))
+    GTEST_SKIP() << "the course scenes are not at " << pt::test::shared_scenes_dir();
   // In the bunny every interior edge is shared by two triangles. Whatever vertex records the
   // de-indexing made, the two triangles' copies of an edge must be the same floats, or a
   // watertight intersector would see a crack: count edges by their exact float endpoints.

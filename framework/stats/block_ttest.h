@@ -41,7 +41,9 @@ struct BlockTestResult {
 
 /// Splits both images into blocks; for each block and channel compares the block mean of the
 /// render with the reference's by Welch's t-test, the variance of a block mean being
-/// Σ variance_i / count_i / P² over its P pixels (the reference's own variance included), and
+/// Σ variance_i / count_i / P² over its P pixels (the reference's own variance included; the
+/// render's variance of one sample is taken as at least the reference's, since a render of few
+/// samples that missed a pixel's rare bright samples underestimates it, often as zero), and
 /// fails where the two-sided p-value is below alpha / blocks (Bonferroni), unless the means agree
 /// within the options' rounding tolerance. Images of different sizes, or any non-finite value,
 /// fail.

@@ -197,6 +197,42 @@ TEST(FrameworkBlockTest, RoundingIsNotADifferenceWhateverTheVariance) {
   EXPECT_FALSE(block_t_test(b, a, exact).pass);
 }
 
+/// A flat grey image (every sample 0.5) but for an edge of 16 pixels in block (2,1), each of
+/// whose samples is bright (1.0) one time in 16: `bright` of each edge pixel's `samples` are.
+RenderEstimate grey_with_rare_edge(int samples, int bright) {
+  RenderEstimate e;
+  e.width = kWidth;
+  e.height = kHeight;
+  for (int y = 0; y < kHeight; ++y) {
+    for (int x = 0; x < kWidth; ++x) {
+      bool edge = x == 40 && y >= 16 && y < 32;
+      PixelStats stats;
+      for (int s = 0; s < samples; ++s) stats.add(glm::vec3(edge && s < bright ? 1.0f : 0.5f));
+      e.mean.push_back(glm::vec3(stats.mean));
+      e.variance.push_back(glm::vec3(stats.variance()));
+      e.count.push_back(float(stats.count));
+    }
+  }
+  return e;
+}
+
+TEST(FrameworkBlockTest, AFewSampleRenderThatMissedARareSampleIsChance) {
+  // The reference (64 samples) saw each edge pixel's bright sample 4 times, as expected. A
+  // correct 4-sample render expects 4 bright samples in the whole edge and sees none one time in
+  // e^4 (about 2%): its edge has a variance of zero. Judged by the reference's variance alone
+  // that is t = 8, a failure; with the reference's variance of one sample standing for the
+  // render's as well, t = 2.
+  RenderEstimate reference = grey_with_rare_edge(64, 4);
+  BlockTestResult r = block_t_test(grey_with_rare_edge(4, 0), reference);
+  EXPECT_TRUE(r.pass) << r.summary;
+  // The same miss over 64 samples a pixel (64 bright samples expected, none seen) is no chance.
+  r = block_t_test(grey_with_rare_edge(64, 0), reference);
+  EXPECT_FALSE(r.pass) << r.summary;
+  ASSERT_EQ(r.failing.size(), 1u);
+  EXPECT_EQ(r.failing[0].block_x, 2);
+  EXPECT_EQ(r.failing[0].block_y, 1);
+}
+
 TEST(FrameworkBlockTest, NoisyRenderAgainstNoiselessBlackStillPasses) {
   // The black band is noiseless in both; the lit part is noisy: zero variance in one block must
   // not make the whole test fragile.

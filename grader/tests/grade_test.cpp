@@ -1,5 +1,6 @@
 // Grading renders through a stand-in renderer: a good render passes, one that crashes, hangs
 // or writes garbage fails alone, and a reference that does not match its checksum is refused.
+#include "framework/testing/test_paths.h"
 #include "grader/grade.h"
 
 #include <unistd.h>
@@ -172,7 +173,7 @@ TEST_F(GraderGrade, ABadManifestNamesTheEntry) {
 // The project's own rubric: every reference recorded, no two graded checks on one image (the
 // normals of two scenes that differ only in materials are one image), every step with points.
 TEST(GraderManifest, TheProjectsRubricHasDistinctReferencesAndPointsInEveryStep) {
-  const Manifest m = read_manifest(std::string(PT_SOURCE_DIR) + "/reference/manifest.json");
+  const Manifest m = read_manifest(std::string(pt::test::source_dir()) + "/reference/manifest.json");
   std::map<std::string, std::string> seen;
   for (const PartSpec& p : m.parts) {
     EXPECT_GT(p.points(), 0.0) << "part " << p.part;

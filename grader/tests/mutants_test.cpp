@@ -1,6 +1,7 @@
 // The mutant machinery: the catalogue is well formed and every patch applies to the complete
 // solution; a scratch tree copies, patches and restores without touching its source; and the
 // verdict reads a grader's results the way the table says.
+#include "framework/testing/test_paths.h"
 #include "grader/mutants.h"
 
 #include <filesystem>
@@ -22,7 +23,7 @@ using nlohmann::json;
 namespace pt::grader {
 namespace {
 
-const fs::path kIndex = fs::path(PT_SOURCE_DIR) / "grader" / "mutants" / "index.json";
+const fs::path kIndex = fs::path(pt::test::source_dir()) / "grader" / "mutants" / "index.json";
 
 TEST(MutantCatalogue, HasAtLeastTwentyFiveBugsOverEveryPart) {
   std::vector<MutantSpec> specs = read_mutant_index(kIndex.string());
@@ -44,14 +45,14 @@ TEST(MutantCatalogue, EveryPatchAndTheSecondSolutionApplyToTheCompleteSolution) 
   std::vector<std::string> patches;
   for (const MutantSpec& s : read_mutant_index(kIndex.string()))
     patches.push_back((kIndex.parent_path() / s.patch).string());
-  for (const std::string& p : second_solution_patches(PT_SOURCE_DIR)) patches.push_back(p);
+  for (const std::string& p : second_solution_patches(pt::test::source_dir())) patches.push_back(p);
   for (const std::string& p : patches) {
     fs::path root = tmp.path() / fs::path(p).stem();
     for (const std::string& rel : patched_files(read_text_file(p))) {
       fs::create_directories((root / rel).parent_path());
-      fs::copy_file(fs::path(PT_SOURCE_DIR) / rel, root / rel);
+      fs::copy_file(fs::path(pt::test::source_dir()) / rel, root / rel);
     }
-    ScratchTree tree(PT_SOURCE_DIR, root.string());
+    ScratchTree tree(pt::test::source_dir(), root.string());
     // apply() needs the copy to be a repository of its own, as sync() makes it.
     ASSERT_EQ(std::system(("git init -q " + root.string()).c_str()), 0);
     EXPECT_NO_THROW(tree.apply(p)) << p;
@@ -59,10 +60,10 @@ TEST(MutantCatalogue, EveryPatchAndTheSecondSolutionApplyToTheCompleteSolution) 
 }
 
 TEST(MutantCatalogue, TheHandoutLeavesItOut) {
-  EXPECT_TRUE(in_solution_only_folder(PT_SOURCE_DIR, "grader/mutants/index.json"));
-  EXPECT_TRUE(in_solution_only_folder(PT_SOURCE_DIR, "grader/second_solution/1-raygen.patch"));
-  EXPECT_FALSE(in_solution_only_folder(PT_SOURCE_DIR, "grader/mutants.cpp"));
-  EXPECT_FALSE(in_solution_only_folder(PT_SOURCE_DIR, "parts/1-raygen/camera_ray.cpp"));
+  EXPECT_TRUE(in_solution_only_folder(pt::test::source_dir(), "grader/mutants/index.json"));
+  EXPECT_TRUE(in_solution_only_folder(pt::test::source_dir(), "grader/second_solution/1-raygen.patch"));
+  EXPECT_FALSE(in_solution_only_folder(pt::test::source_dir(), "grader/mutants.cpp"));
+  EXPECT_FALSE(in_solution_only_folder(pt::test::source_dir(), "parts/1-raygen/camera_ray.cpp"));
 }
 
 TEST(ScratchTree, CopiesPatchesAndRestoresWithoutTouchingItsSource) {

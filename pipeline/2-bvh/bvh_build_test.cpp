@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "framework/testing/test_paths.h"
 #include "parts/2-bvh/bvh.h"
 #include "parts/2-bvh/tests/bvh_check.h"
 #include "parts/2-bvh/tests/bvh_test_inputs.h"
@@ -61,7 +62,7 @@ void expect_well_formed(const Scene& scene, const Bvh& bvh, int leaf) {
 TEST(PipelineBvhBuild, TreeIsWellFormed) {
   Scene scene;
   std::string why;
-  if (!test::try_load(std::string(PT_SOURCE_DIR) + "/scenes/cornell_coil.dae", &scene, &why))
+  if (!test::try_load(std::string(pt::test::source_dir()) + "/scenes/cornell_coil.dae", &scene, &why))
     GTEST_SKIP() << why;
   for (int leaf : {1, 4, 8}) {
     BvhOptions sah{BvhSplitMethod::sah, leaf, 16, {}}, mid{BvhSplitMethod::median, leaf, 16, {}};

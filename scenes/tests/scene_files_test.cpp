@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "framework/testing/test_paths.h"
 #include "framework/text/text_file.h"
 #include "scenes/generator/collada_writer.h"
 #include "scenes/generator/cornell_scenes.h"
@@ -29,7 +30,7 @@ TEST(SceneFiles, CommittedScenesAreWhatTheGeneratorWrites) {
   for (const auto& entry : scenegen::scene_entries()) {
     if (!entry.committed) continue;
     ++committed;
-    const std::string path = std::string(PT_SOURCE_DIR) + "/scenes/" + entry.name + ".dae";
+    const std::string path = std::string(pt::test::source_dir()) + "/scenes/" + entry.name + ".dae";
     const std::string on_disk = pt::read_text_file(path);
     ASSERT_FALSE(on_disk.empty()) << path << " is missing or empty";
     const std::string generated = scenegen::to_collada(scenegen::build_scene(entry.name));

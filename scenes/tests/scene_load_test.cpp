@@ -9,10 +9,11 @@
 
 #include "framework/scene/collada_loader.h"
 #include "framework/scene/scene.h"
+#include "framework/testing/test_paths.h"
 
 namespace {
 
-std::string scene_path(const std::string& name) { return std::string(PT_SOURCE_DIR) + "/scenes/" + name + ".dae"; }
+std::string scene_path(const std::string& name) { return std::string(pt::test::source_dir()) + "/scenes/" + name + ".dae"; }
 
 // Loads a committed scene and fails on any warning: our own files should need no fallback.
 pt::Scene load(const std::string& name) {
@@ -153,7 +154,7 @@ TEST(SceneLoad, CornellMirrorCoilHasCBcoilsDisagreeingLight) {
 // Our box frames like the course's: same camera, the same light, the box within the course's
 // (whose exporter left a few millimetres of offset in its matrices).
 TEST(SceneLoad, FramesLikeTheCourseScene) {
-  const std::string course = std::string(PT_SHARED_SCENES_DIR) + "/sky/CBspheres_lambertian.dae";
+  const std::string course = std::string(pt::test::shared_scenes_dir()) + "/sky/CBspheres_lambertian.dae";
   if (!std::filesystem::exists(course)) GTEST_SKIP() << "the course's scenes are not at " << course;
   pt::Scene theirs = pt::load_collada(course, [](const std::string&) {});
   pt::Scene ours = load("cornell_spheres");

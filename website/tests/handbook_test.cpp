@@ -2,6 +2,7 @@
 // step of every part has its row in the README and its section on the part's page, and every
 // function or type the pages say is in a file is in that file. Run in the instructor's tree and,
 // since the test ships with it, in the handout, where the sources hold the stubs.
+#include "framework/testing/test_paths.h"
 #include "website/src/handbook.h"
 
 #include <gtest/gtest.h>
@@ -21,7 +22,7 @@ namespace fs = std::filesystem;
 namespace pt::web {
 namespace {
 
-const fs::path kRoot = PT_SOURCE_DIR;
+const fs::path kRoot = pt::test::source_dir();
 const fs::path kPages = kRoot / "docs" / "handout";
 
 std::string read(const fs::path& p) { return fs::exists(p) ? read_text_file(p) : std::string(); }

@@ -1,5 +1,6 @@
 // `website init`: the starting write-up has the five parts' sections with the renders each asks
 // for, every scene it names is found, and it builds as it is.
+#include "framework/testing/test_paths.h"
 #include "website/src/starter.h"
 
 #include <gtest/gtest.h>
@@ -20,8 +21,8 @@ namespace {
 pt::web::StarterOptions options(const fs::path& dir) {
   pt::web::StarterOptions o;
   o.dir = dir;
-  o.scene_dirs = {fs::path(PT_SOURCE_DIR) / "scenes"};
-  if (fs::is_directory(PT_SHARED_SCENES_DIR)) o.scene_dirs.push_back(PT_SHARED_SCENES_DIR);
+  o.scene_dirs = {fs::path(pt::test::source_dir()) / "scenes"};
+  if (fs::is_directory(pt::test::shared_scenes_dir())) o.scene_dirs.push_back(pt::test::shared_scenes_dir());
   return o;
 }
 
@@ -121,7 +122,7 @@ TEST(WebsiteInit, WithoutTheCourseScenesEveryFigureUsesTheProjectsOwn) {
   TestFolder dir;
   pt::web::StarterOptions o;
   o.dir = dir.path();
-  o.scene_dirs = {fs::path(PT_SOURCE_DIR) / "scenes"};
+  o.scene_dirs = {fs::path(pt::test::source_dir()) / "scenes"};
   std::string md = pt::web::starter_markdown(o);
   EXPECT_EQ(md.find("No scene for this figure"), std::string::npos) << md;
   EXPECT_EQ(md.find("sky/"), std::string::npos);

@@ -22,6 +22,7 @@
 
 #include "framework/process/child_process.h"
 #include "framework/testing/temp_folder.h"
+#include "framework/testing/test_paths.h"
 #include "framework/text/text_file.h"
 #include "grader/batch.h"
 #include "grader/bundle.h"
@@ -33,7 +34,7 @@ namespace fs = std::filesystem;
 namespace pt::grader {
 namespace {
 
-const fs::path kSource = PT_SOURCE_DIR;
+const fs::path kSource = pt::test::source_dir();
 const std::string kSphere = "parts/1-raygen/sphere_intersect.cpp";
 const std::string kTriangle = "parts/1-raygen/triangle_intersect.cpp";
 // The cheater runs' cap on every test and render: an endless loop or a memory bomb costs this

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "framework/testing/test_paths.h"
 #include "parts/2-bvh/tests/bvh_check.h"
 
 namespace pt {
@@ -23,7 +24,7 @@ class traversal : public testing::TestWithParam<Case> {};
 TEST_P(traversal, big_course_scene_matches_brute_force) {
   Scene scene;
   std::string why;
-  if (!test::try_load(std::string(PT_SHARED_SCENES_DIR) + "/" + GetParam().path, &scene, &why))
+  if (!test::try_load(std::string(pt::test::shared_scenes_dir()) + "/" + GetParam().path, &scene, &why))
     GTEST_SKIP() << why << " (the course's scenes live beside the project, in ../shared)";
   test::check_against_brute_force(scene, GetParam());
 }
@@ -39,7 +40,7 @@ INSTANTIATE_TEST_SUITE_P(, traversal,
 TEST(traversal_project, coil_matches_brute_force_with_three_tree_shapes) {
   Scene scene;
   std::string why;
-  if (!test::try_load(std::string(PT_SOURCE_DIR) + "/scenes/cornell_coil.dae", &scene, &why))
+  if (!test::try_load(std::string(pt::test::source_dir()) + "/scenes/cornell_coil.dae", &scene, &why))
     GTEST_SKIP() << why;
   for (const Case& c : {Case{"cornell_coil.dae", BvhSplitMethod::sah, 4, kRays},
                         Case{"cornell_coil.dae", BvhSplitMethod::median, 1, kRays},
