@@ -280,9 +280,9 @@ TEST_F(GraderBundle, CompileErrorIsAResult) {
 
 // The cheaters: each replaces one student file of Part 1 (the sphere's unless its first lines say
 // "replaces FILE"). A sphere cheater and a triangle cheater go in one submission: their steps
-// are apart (the sphere's step 4, the triangle's steps 3 and 6), and the renders and step 5,
-// which rest on both, are no more than with both honest stubs. Every step that the stubs leave
-// at full marks (the camera's and the pixel loop's) must keep them: the rest is still graded.
+// are apart (the sphere's, the triangle's), and the renders, which rest on both, must score no
+// more than with both honest stubs. Every step that the stubs leave at full marks (the camera's
+// and the pixel loop's) must keep them: the rest of the submission is still graded.
 TEST_F(GraderBundle, CheatersGetNothingForWhatTheyAttack) {
   double seconds = 0.0;
   Files files = bundle_->solution();
