@@ -77,7 +77,7 @@ std::vector<std::string> tracked_files(const std::string& source_dir) {
                                 60.0, {}, 64 << 20);
   if (!files.ok())
     throw std::runtime_error(source_dir + ": git ls-files " + files.describe() +
-                             " (the handout and the bundle are made from a git checkout)\n" +
+                             " (the handout, the bundle and the scratch trees are copied from a git checkout)\n" +
                              files.output);
   std::vector<std::string> list;
   std::string_view all = files.output;

@@ -4,18 +4,13 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "framework/text/markdown_links.h"
 #include "framework/text/text_file.h"
 
 namespace fs = std::filesystem;
 
 namespace pt::grader {
 namespace {
-
-bool is_relative_target(const std::string& target) {
-  if (target.empty() || target[0] == '#' || target[0] == '/') return false;
-  const size_t colon = target.find(':'), slash = target.find('/');
-  return colon == std::string::npos || (slash != std::string::npos && slash < colon);
-}
 
 std::string rebase_one(const std::string& target, const fs::path& from_dir, const fs::path& to_dir) {
   const size_t hash = target.find('#');
@@ -30,38 +25,9 @@ std::string rebase_one(const std::string& target, const fs::path& from_dir, cons
 
 std::string rebase_links(const std::string& markdown, const std::string& from, const std::string& to) {
   const fs::path from_dir = fs::path(from).parent_path(), to_dir = fs::path(to).parent_path();
-  std::string out;
-  bool fenced = false;
-  size_t pos = 0;
-  while (pos < markdown.size()) {
-    size_t end = markdown.find('\n', pos);
-    if (end == std::string::npos) end = markdown.size();
-    std::string line = markdown.substr(pos, end - pos);
-    const size_t first = line.find_first_not_of(' ');
-    if (first != std::string::npos && line.compare(first, 3, "```") == 0) fenced = !fenced;
-    if (!fenced) {
-      std::string rebuilt;
-      bool code = false;
-      for (size_t i = 0; i < line.size(); ++i) {
-        if (line[i] == '`') code = !code;
-        if (!code && line[i] == ']' && i + 1 < line.size() && line[i + 1] == '(') {
-          const size_t close = line.find(')', i + 2);
-          if (close != std::string::npos) {
-            const std::string target = line.substr(i + 2, close - i - 2);
-            rebuilt += "](" + (is_relative_target(target) ? rebase_one(target, from_dir, to_dir) : target) + ")";
-            i = close;
-            continue;
-          }
-        }
-        rebuilt += line[i];
-      }
-      line = rebuilt;
-    }
-    out += line;
-    if (end < markdown.size()) out += '\n';
-    pos = end + 1;
-  }
-  return out;
+  return rewrite_markdown_links(markdown, [&](const std::string& target) {
+    return is_relative_link(target) ? rebase_one(target, from_dir, to_dir) : target;
+  });
 }
 
 void write_student_readme(const std::string& source_dir, const std::string& out_dir) {

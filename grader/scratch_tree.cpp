@@ -7,6 +7,7 @@
 
 #include "framework/process/child_process.h"
 #include "framework/text/text_file.h"
+#include "grader/handout.h"
 
 namespace fs = std::filesystem;
 
@@ -27,23 +28,6 @@ bool write_if_changed(const fs::path& to, const std::string& text, fs::perms per
   if (!out) throw std::runtime_error(to.string() + ": cannot be written");
   fs::permissions(to, perms);
   return true;
-}
-
-std::vector<std::string> tracked_files(const std::string& source) {
-  ChildResult files = run_child({"git", "-C", source, "ls-files", "-z"}, 60.0, {}, 64 << 20,
-                                ChildStreams::separate);
-  if (!files.ok())
-    throw std::runtime_error(source + ": git ls-files " + files.describe() +
-                             " (a scratch tree is copied from a git checkout)\n" + files.errors);
-  std::vector<std::string> list;
-  std::string_view all = files.output;
-  for (size_t start = 0; start < all.size();) {
-    size_t end = all.find('\0', start);
-    if (end == std::string_view::npos) end = all.size();
-    if (end > start) list.emplace_back(all.substr(start, end - start));
-    start = end + 1;
-  }
-  return list;
 }
 
 }  // namespace

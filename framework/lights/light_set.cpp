@@ -84,6 +84,19 @@ glm::vec3 triangle_normal(const glm::vec3& a, const glm::vec3& b, const glm::vec
   return glm::dot(n, side) < 0.0f ? -n : n;
 }
 
+// triangle_normal of each of `triangles`, in their order.
+std::vector<glm::vec3> triangle_normals(const Scene& scene, const std::vector<uint32_t>& triangles,
+                                        const glm::vec3& side) {
+  std::vector<glm::vec3> normals;
+  normals.reserve(triangles.size());
+  for (uint32_t prim : triangles) {
+    const Triangle& tri = scene.triangles[prim];
+    normals.push_back(triangle_normal(scene.positions[tri.v[0]], scene.positions[tri.v[1]],
+                                      scene.positions[tri.v[2]], side));
+  }
+  return normals;
+}
+
 std::string number(float v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.3g", double(v));
@@ -155,7 +168,7 @@ bool sample_triangles(const Scene& scene, const SampledLight& l, const glm::vec3
                   &c = scene.positions[tri.v[2]];
   const glm::vec3 bary = square_to_uniform_triangle({u0, u.y});
   const glm::vec3 q = bary.x * a + bary.y * b + bary.z * c;
-  const glm::vec3 n = triangle_normal(a, b, c, side);
+  const glm::vec3 n = l.triangle_normals[cell];
   if (n == glm::vec3(0.0f)) return false;
   const glm::vec3 d = q - p;
   const float dist = glm::length(d);
@@ -251,10 +264,12 @@ LightSet::LightSet(const Scene& scene, const EnvironmentMap* environment)
     l.area = 0.0f;
     for (float a : panel_areas[k]) l.area += a;
     l.triangle_pick = Distribution1D(panel_areas[k]);
+    l.triangle_normals = triangle_normals(scene, l.triangles, l.normal);
     for (uint32_t prim : l.triangles) primitive_light_[prim] = int(k);
   }
   for (auto& [material, m] : meshes) {
     m.triangle_pick = Distribution1D(mesh_areas[material]);
+    m.triangle_normals = triangle_normals(scene, m.triangles, glm::vec3(0.0f));
     for (uint32_t prim : m.triangles) primitive_light_[prim] = int(lights_.size());
     lights_.push_back(std::move(m));
   }

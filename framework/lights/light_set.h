@@ -82,6 +82,9 @@ struct SampledLight {
   float area = 0.0f;                    ///< the surface it samples: parallelogram, triangles or sphere
   std::vector<uint32_t> triangles;      ///< panel, mesh: its triangles (primitive indices)
   Distribution1D triangle_pick;         ///< panel, mesh: by area
+  /// panel, mesh: each triangle's unit normal (turned to `normal` for a panel; zero when
+  /// degenerate), made once: every light sample of a render needs its triangle's
+  std::vector<glm::vec3> triangle_normals;
   uint32_t sphere = 0;                  ///< sphere light: index into Scene::spheres
   bool is_delta() const {
     return kind == SampledLightKind::point || kind == SampledLightKind::spot ||

@@ -5,6 +5,7 @@
 #include <ostream>
 #include <system_error>
 
+#include "framework/text/markdown_links.h"
 #include "framework/text/text_file.h"
 #include "website/src/site_builder.h"
 
@@ -12,12 +13,6 @@ namespace fs = std::filesystem;
 
 namespace pt::web {
 namespace {
-
-bool is_relative_link(const std::string& target) {
-  if (target.empty() || target[0] == '#' || target[0] == '/') return false;
-  const size_t colon = target.find(':'), slash = target.find('/');
-  return colon == std::string::npos || (slash != std::string::npos && slash < colon);
-}
 
 std::string html_name(const std::string& page) {
   return page == "README.md" ? "index.html" : fs::path(page).replace_extension(".html").string();
@@ -62,35 +57,9 @@ void copy_tree_into(const fs::path& from, const fs::path& to, bool skip_top_html
 std::string handbook_markdown(const std::string& markdown, const fs::path& page_dir,
                               const std::set<std::string>& page_names,
                               std::set<std::string>* sources, std::vector<std::string>* outside) {
-  std::string out;
-  bool fenced = false;
-  for (size_t pos = 0; pos < markdown.size();) {
-    size_t end = markdown.find('\n', pos);
-    if (end == std::string::npos) end = markdown.size();
-    const std::string line = markdown.substr(pos, end - pos);
-    const size_t first = line.find_first_not_of(' ');
-    if (first != std::string::npos && line.compare(first, 3, "```") == 0) fenced = !fenced;
-    if (fenced) {
-      out += line;
-    } else {
-      bool code = false;
-      for (size_t i = 0; i < line.size(); ++i) {
-        if (line[i] == '`') code = !code;
-        if (!code && line[i] == ']' && i + 1 < line.size() && line[i + 1] == '(') {
-          const size_t close = line.find(')', i + 2);
-          if (close != std::string::npos) {
-            out += "](" + rewrite(line.substr(i + 2, close - i - 2), page_dir, page_names, sources, outside) + ")";
-            i = close;
-            continue;
-          }
-        }
-        out += line[i];
-      }
-    }
-    if (end < markdown.size()) out += '\n';
-    pos = end + 1;
-  }
-  return out;
+  return rewrite_markdown_links(markdown, [&](const std::string& target) {
+    return rewrite(target, page_dir, page_names, sources, outside);
+  });
 }
 
 HandbookReport build_handbook(const HandbookOptions& options) {
