@@ -3,6 +3,10 @@
 # pt_add_library_in(NAME lib DIR dir LIBS dep ... [EXCLUDE regex ...])
 # pt_add_tests_in(DIR dir LABEL label LIBS lib ... [EXCLUDE regex ...] [STEPS] [OUT var])
 include_guard(GLOBAL)
+# When a test program's tests are listed: at its link (POST_BUILD, a developer's build), or when
+# ctest runs (PRE_TEST: the autograder bundle's build, where the program holds the student's code,
+# which must not run while the student's user owns the build tree it could rewrite).
+set(PT_TEST_DISCOVERY POST_BUILD CACHE STRING "POST_BUILD or PRE_TEST: when gtest_discover_tests lists a test program")
 if(PT_BUILD_TESTS)
   enable_testing()
   find_package(GTest REQUIRED)
@@ -71,7 +75,8 @@ function(pt_add_test)
   gtest_discover_tests(${T_NAME}
     TEST_PREFIX "${T_PREFIX}"
     PROPERTIES LABELS "${T_LABELS}" TIMEOUT ${T_TIMEOUT}
-    DISCOVERY_TIMEOUT 60)
+    DISCOVERY_TIMEOUT 60
+    DISCOVERY_MODE ${PT_TEST_DISCOVERY})
   list(LENGTH T_LABELS label_count)
   if(label_count GREATER 1)
     # gtest_discover_tests hands its PROPERTIES on as a flat list, so a second label arrives as

@@ -1,14 +1,19 @@
 #include "grader/autograde.h"
 
+#include <sched.h>
+#include <sys/mount.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 #include <tuple>
 
 #include <nlohmann/json.hpp>
@@ -100,7 +105,7 @@ struct BuildOutcome {
 };
 
 BuildOutcome student_build(int part, const AutogradeLayout& L, const Sandbox& sandbox,
-                           double timeout) {
+                           double timeout, int jobs) {
   BuildOutcome r;
   std::string target = "grade_part" + std::to_string(part);
   if (read_text_file(L.build / "build.ninja").find(target + "_isolated") != std::string::npos)
@@ -115,9 +120,19 @@ BuildOutcome student_build(int part, const AutogradeLayout& L, const Sandbox& sa
   o.environment.push_back("CCACHE_DISABLE=1");
   give_tree(L.build, sandbox.uid, sandbox.gid);
   set_modes(L.build, fs::perms(0755), fs::perms(0644), fs::perms(0755));
-  ChildResult c = run_child({"cmake", "--build", L.build.string(), "--target", target, "-j2"}, o);
+  ChildResult c = run_child({"cmake", "--build", L.build.string(), "--target", target, "-j",
+                             std::to_string(std::max(1, jobs))}, o);
   give_tree(L.build, 0, 0);
   set_modes(L.build, fs::perms(0711), fs::perms(0600), fs::perms(0711));
+  // A shared library is read by the loader (dlopen maps it): the image module, which every
+  // render and image test loads, holds no solution, so it stays readable.
+  std::error_code ec;
+  for (fs::recursive_directory_iterator it(L.build, ec), end; !ec && it != end; it.increment(ec)) {
+    std::string name = it->path().filename().string();
+    if (it->is_regular_file() && !it->is_symlink() && name.size() > 3 &&
+        name.compare(name.size() - 3, 3, ".so") == 0)
+      fs::permissions(it->path(), fs::perms(0755), ec);
+  }
   sandbox.finish(scratch);
   r.ok = c.ok();
   if (!r.ok) {
@@ -143,6 +158,17 @@ AutogradeLayout AutogradeLayout::under(const std::string& root) {
   return L;
 }
 
+std::string mount_tree_over(const std::string& tree, const std::string& project) {
+  if (unshare(CLONE_NEWNS) != 0)
+    return std::string("cannot make a mount namespace of its own: ") + std::strerror(errno);
+  // Nothing mounted here may reach the caller's namespace.
+  if (mount(nullptr, "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0)
+    return std::string("cannot make the mounts private: ") + std::strerror(errno);
+  if (mount(tree.c_str(), project.c_str(), nullptr, MS_BIND | MS_REC, nullptr) != 0)
+    return "cannot mount " + tree + " over " + project + ": " + std::strerror(errno);
+  return "";
+}
+
 void give_tree(const fs::path& dir, long uid, long gid) {
   if (uid < 0) return;
   auto give = [&](const fs::path& p) {
@@ -155,7 +181,7 @@ void give_tree(const fs::path& dir, long uid, long gid) {
 
 std::vector<TrustedTest> list_part_tests(const fs::path& build_dir, int part) {
   std::vector<TrustedTest> all;
-  for (const std::string label : {"part" + std::to_string(part) + "_isolated", "part" + std::to_string(part)}) {
+  for (const std::string& label : {"part" + std::to_string(part) + "_isolated", "part" + std::to_string(part)}) {
     ChildResult c = run_child({"ctest", "--test-dir", build_dir.string(), "--show-only=json-v1", "-L",
                                "^" + label + "$"},
                               120.0, {}, 64 << 20, ChildStreams::separate);
@@ -231,13 +257,20 @@ int autograde(const std::string& root, const std::vector<int>& parts,
               const AutogradeTuning& tuning) {
   auto start = std::chrono::steady_clock::now();
   AutogradeLayout L = AutogradeLayout::under(root);
+  if (!tuning.submission.empty()) L.submission = fs::absolute(tuning.submission);
+  if (!tuning.results.empty()) L.results = fs::absolute(tuning.results);
   nlohmann::json results;
   try {
+    if (!tuning.tree.empty()) {
+      std::string why = mount_tree_over(tuning.tree, L.project.string());
+      if (!why.empty()) throw std::runtime_error(why);
+    }
     std::vector<std::string> files = read_lines(L.student_list());
     SubmissionIntake intake =
         take_submission(files, L.submission.string(), L.project.string(), L.stubs().string());
-    Sandbox sandbox = Sandbox::standard(L.scratch.string(), 0);
+    Sandbox sandbox = Sandbox::standard(L.scratch.string(), tuning.slot);
     sandbox.max_check_seconds = tuning.max_check_seconds;
+    sandbox.jobs = tuning.jobs > 0 ? tuning.jobs : int(std::max(1u, std::thread::hardware_concurrency()));
     if (tuning.disk_bytes > 0) sandbox.limits.disk_bytes = tuning.disk_bytes;
     Manifest manifest = read_manifest((L.project / "reference" / "manifest.json").string());
     std::vector<TrustedTest> trusted = read_trusted(L.test_list());
@@ -246,7 +279,8 @@ int autograde(const std::string& root, const std::vector<int>& parts,
     options.build_dir = L.build.string();
     options.manifest_path = (L.project / "reference" / "manifest.json").string();
     options.pathtracer = (L.build / "app" / "pathtracer").string();
-    options.out_dir = (L.private_dir / "out").string();
+    // Renders and diff images: a folder of this run's own (runs of grader batch go side by side).
+    options.out_dir = (L.private_dir / ("out-" + std::to_string(tuning.slot))).string();
     options.build = false;  // built below, as the student's user
     options.isolated = true;
     options.isolated_separate = true;
@@ -257,7 +291,7 @@ int autograde(const std::string& root, const std::vector<int>& parts,
       if (!parts.empty() && std::find(parts.begin(), parts.end(), spec.part) == parts.end())
         continue;
       std::cerr << "autograde: part " << spec.part << ": building\n";
-      BuildOutcome built = student_build(spec.part, L, sandbox, spec.build_timeout);
+      BuildOutcome built = student_build(spec.part, L, sandbox, spec.build_timeout, tuning.build_jobs);
       if (built.ok) {
         std::cerr << "autograde: part " << spec.part << ": grading\n";
         all.push_back(grade_part(manifest, spec.part, options));

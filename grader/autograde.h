@@ -43,11 +43,26 @@ std::vector<TrustedTest> list_part_tests(const std::filesystem::path& build_dir,
 /// solution and the results from the student's user. Throws std::runtime_error on a failure.
 void autograde_setup(const std::string& root, const std::string& grader_exe);
 
-/// Tighter limits for a test run of the bundle (CI's cheater cases); 0 keeps the standard ones.
+/// How one run of `grader autograde` differs from Gradescope's: tighter limits for a test run
+/// of the bundle (CI's cheater cases), and where `grader batch` puts a submission's run. Every
+/// zero or empty field keeps the standard.
 struct AutogradeTuning {
   double max_check_seconds = 0.0;  ///< caps every test's and render's wall time
   size_t disk_bytes = 0;           ///< the disk a check may fill
+  int jobs = 0;                    ///< tests run at once (0: one per core)
+  int build_jobs = 2;              ///< the student's build's jobs
+  int slot = 0;                    ///< the first of the uids the run uses is 60000 + slot
+  std::string submission;          ///< instead of root/submission
+  std::string results;             ///< instead of root/results/results.json
+  /// A copy of the set-up tree to grade in instead of root/source/project: mounted over it in a
+  /// mount namespace of this process's own, so that the build tree's absolute paths still hold
+  /// and runs side by side never share a build (grader batch).
+  std::string tree;
 };
+
+/// Mounts `tree` over `project` in a new mount namespace of this process (and its children):
+/// needs root (CAP_SYS_ADMIN). Returns "" on success, else why not.
+std::string mount_tree_over(const std::string& tree, const std::string& project);
 
 /// Grades root/submission into root/results/results.json: the intake, the student's build as
 /// the sandbox's user, then every part in `parts` (all when empty). Always writes the results

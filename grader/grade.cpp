@@ -116,15 +116,23 @@ std::string pathtracer_for(int part, const GradeOptions& options) {
 
 /// Runs part N's step tests through CTest (each its own process and time limit) and returns
 /// one check per test, in the order CTest reports them.
-/// Part N's trusted tests, each alone in the sandbox, judged by its sealed report (never by an
-/// exit code or printed lines). A skip is a failure here: the bundle has every course scene, so
+/// Part N's trusted tests, each alone in a process of its own in the sandbox (up to its `jobs`
+/// at once), judged by its sealed report (never by an exit code or printed lines). A skip is a failure here: the bundle has every course scene, so
 /// no test of the complete solution skips, and a skip must not shrink the denominator.
 std::vector<CheckResult> run_sealed_tests(int part, const PartSpec& spec,
                                           const GradeOptions& options) {
-  std::vector<CheckResult> checks;
+  std::vector<const TrustedTest*> mine;
+  std::vector<SealedRun> runs;
   for (const TrustedTest& t : *options.trusted) {
     if (t.part != part) continue;
-    SealedTest s = run_sealed_test(t.executable, t.gtest, *options.sandbox, spec.test_timeout);
+    mine.push_back(&t);
+    runs.push_back({t.executable, t.gtest, spec.test_timeout});
+  }
+  std::vector<SealedTest> sealed = pt::grader::run_sealed_tests(runs, *options.sandbox);
+  std::vector<CheckResult> checks;
+  for (size_t i = 0; i < mine.size(); ++i) {
+    const TrustedTest& t = *mine[i];
+    const SealedTest& s = sealed[i];
     CheckResult r;
     r.kind = "test";
     r.name = t.name;

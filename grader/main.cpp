@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "grader/autograde.h"
+#include "grader/batch.h"
 #include "grader/bundle.h"
 #include "grader/grade.h"
 #include "grader/handout.h"
@@ -88,6 +89,25 @@ int main(int argc, char** argv) {
   autograde_cmd->add_option("--max-check-seconds", tuning.max_check_seconds,
                             "cap every test's and render's time (a test run of the bundle)");
   autograde_cmd->add_option("--disk-mb", disk_mb, "the disk a check may fill (default 1024)");
+  autograde_cmd->add_option("--jobs", tuning.jobs, "tests run at once, each as a uid of its own (default: one per core)");
+  autograde_cmd->add_option("--build-jobs", tuning.build_jobs, "the student's build's jobs")->capture_default_str();
+  autograde_cmd->add_option("--slot", tuning.slot, "the student's uids start at 60000 + SLOT")->capture_default_str();
+  autograde_cmd->add_option("--submission", tuning.submission, "the submission folder (default ROOT/submission)");
+  autograde_cmd->add_option("--results", tuning.results, "the results file (default ROOT/results/results.json)");
+  autograde_cmd->add_option("--tree", tuning.tree,
+                            "grade in this copy of the set-up tree, mounted over ROOT/source/project");
+  // Many submissions on one machine (grader/batch.h).
+  BatchOptions batch_options;
+  std::string batch_parts;
+  CLI::App* batch = app.add_subcommand(
+      "batch", "grade every submission folder under DIR in parallel, as the bundle does");
+  batch->add_option("DIR", batch_options.submissions, "one folder per submission")->required();
+  batch->add_option("--root", batch_options.root, "a root folder set up by the bundle's setup.sh")->required();
+  batch->add_option("--out", batch_options.out_dir, "where each NAME/results.json and scores.csv go (default DIR-results)");
+  batch->add_option("--jobs", batch_options.jobs, "submissions graded at once (default: one per core)");
+  batch->add_option("--parts", batch_parts, "only these parts, e.g. 1,3");
+  batch->add_option("--max-check-seconds", batch_options.tuning.max_check_seconds,
+                    "cap every test's and render's time (a test run)");
   CLI11_PARSE(app, argc, argv);
 
   if (*gradescope) {
@@ -109,6 +129,13 @@ int main(int argc, char** argv) {
       std::cerr << "grader autograde-setup: " << e.what() << "\n";
       return 2;
     }
+  }
+  if (*batch) {
+    std::stringstream list(batch_parts);
+    for (std::string p; std::getline(list, p, ',');)
+      if (!p.empty()) batch_options.parts.push_back(std::atoi(p.c_str()));
+    batch_options.grader_exe = fs::read_symlink("/proc/self/exe").string();
+    return grade_batch(batch_options);
   }
   if (*autograde_cmd) {
     std::vector<int> parts;

@@ -4,8 +4,10 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdio>
+#include <thread>
 #include <filesystem>
 #include <random>
 #include <sstream>
@@ -63,6 +65,16 @@ Sandbox Sandbox::standard(const std::string& scratch_root, int slot) {
   s.limits.disk_bytes = size_t(1) << 30;
   s.limits.disk_watch = {scratch_root, fs::temp_directory_path().string()};
   if (fs::exists("/dev/shm")) s.limits.disk_watch.push_back("/dev/shm");
+  return s;
+}
+
+Sandbox Sandbox::lane(int k) const {
+  Sandbox s = *this;
+  if (protects()) {
+    s.uid = uid + k;
+    s.gid = gid + k;
+  }
+  s.jobs = 1;
   return s;
 }
 
@@ -189,9 +201,38 @@ SealedTest run_sealed_test(const std::string& executable, const std::string& nam
   close(nonce_pipe[0]);
   t.seconds = run.seconds;
   t.output = run.output;
+  t.disk_exceeded = run.disk_exceeded;
   t.status = judge_sealed_report(report.contents(1 << 20), nonce, name, run, &t.why);
   sandbox.finish(scratch);
   return t;
+}
+
+std::vector<SealedTest> run_sealed_tests(const std::vector<SealedRun>& runs, const Sandbox& sandbox,
+                                         const std::vector<std::string>& environment) {
+  std::vector<SealedTest> results(runs.size());
+  // Without a uid of its own per lane, ending one test's user would end the others': one lane.
+  const int lanes = sandbox.protects() ? std::max(1, std::min<int>(sandbox.jobs, int(runs.size()))) : 1;
+  std::atomic<size_t> next{0};
+  auto lane_work = [&](int k) {
+    Sandbox mine = sandbox.lane(k);
+    for (size_t i; (i = next++) < runs.size();)
+      results[i] = run_sealed_test(runs[i].executable, runs[i].name, mine, runs[i].wall_seconds,
+                                   environment);
+  };
+  if (lanes == 1) {
+    lane_work(0);
+  } else {
+    std::vector<std::thread> threads;
+    for (int k = 0; k < lanes; ++k) threads.emplace_back(lane_work, k);
+    for (std::thread& t : threads) t.join();
+    // The disk is shared: a test stopped for it beside others may have paid for another's.
+    Sandbox alone = sandbox.lane(0);
+    for (size_t i = 0; i < runs.size(); ++i)
+      if (results[i].disk_exceeded)
+        results[i] = run_sealed_test(runs[i].executable, runs[i].name, alone,
+                                     runs[i].wall_seconds, environment);
+  }
+  return results;
 }
 
 std::vector<std::string> list_gtest_tests(const std::string& executable, double wall_seconds) {

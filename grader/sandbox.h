@@ -19,8 +19,14 @@ struct Sandbox {
   std::string scratch_root;  ///< each run gets a fresh folder below it, the only one it may write
   ChildLimits limits;        ///< wall_seconds is set per run from the check's own limit
   double max_check_seconds = 0.0;  ///< when > 0, caps every run's wall time (CI's cheater runs)
+  /// How many tests may run at once (run_sealed_tests): the k-th runs as uid + k, gid + k, so
+  /// that ending one test's processes (every process of its uid) never ends another's.
+  int jobs = 1;
 
   bool protects() const { return uid >= 0; }
+
+  /// The same sandbox as user uid + k (k < jobs): where the k-th of the tests run at once goes.
+  Sandbox lane(int k) const;
 
   /// The sandbox the grader uses by default: as root, a uid of its own chosen from `slot`
   /// (60000 + slot; no account is needed for it), the given limits; otherwise the caller's user,
@@ -53,6 +59,7 @@ enum class SealedStatus { passed, failed, skipped };
 struct SealedTest {
   std::string name;          ///< GoogleTest's Suite.Name
   SealedStatus status = SealedStatus::failed;
+  bool disk_exceeded = false;  ///< stopped for using more disk than allowed
   std::string output;        ///< what the test printed (for the student's message)
   std::string why;           ///< when failed: why, in a student's terms
   double seconds = 0.0;
@@ -64,6 +71,20 @@ struct SealedTest {
 SealedTest run_sealed_test(const std::string& executable, const std::string& name,
                            const Sandbox& sandbox, double wall_seconds,
                            const std::vector<std::string>& environment = {});
+
+/// One test to run: its program, its GoogleTest name, its wall-time limit.
+struct SealedRun {
+  std::string executable;
+  std::string name;
+  double wall_seconds = 60.0;
+};
+
+/// Runs every test of `runs` as run_sealed_test does, up to sandbox.jobs at once (each lane a
+/// uid of its own), and returns their outcomes in the order of `runs`. The disk limit watches
+/// free space, which tests running side by side share: a test stopped for the disk while
+/// another ran beside it is run again alone, and only that run's outcome counts.
+std::vector<SealedTest> run_sealed_tests(const std::vector<SealedRun>& runs, const Sandbox& sandbox,
+                                         const std::vector<std::string>& environment = {});
 
 /// The verdict from a run's report and its ending: passed only when the report holds, with
 /// `nonce`, exactly one line for `name` saying passed and the closing line of the program, no

@@ -18,6 +18,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <sstream>
 #include <thread>
 
@@ -152,6 +153,25 @@ int end_every_descendant(long uid, int* reaped_target, pid_t target, int* target
   return reaped;
 }
 
+/// Closes every descriptor above 2 but `keep` and `also`.
+void close_all_but(std::initializer_list<int> keep, const std::vector<int>& also) {
+  std::vector<int> open_fds;
+  if (DIR* d = opendir("/proc/self/fd")) {
+    while (dirent* e = readdir(d)) {
+      char* end = nullptr;
+      long fd = std::strtol(e->d_name, &end, 10);
+      if (*end == '\0' && end != e->d_name && fd > 2 && fd != dirfd(d)) open_fds.push_back(int(fd));
+    }
+    closedir(d);
+  }
+  for (int fd : open_fds) {
+    bool kept = false;
+    for (int k : keep) kept = kept || k == fd;
+    for (int k : also) kept = kept || k == fd;
+    if (!kept) close(fd);
+  }
+}
+
 /// Set when the keeper's parent (the caller) died: the keeper then ends the tree as at a limit.
 volatile sig_atomic_t caller_gone = 0;
 void on_caller_gone(int) { caller_gone = 1; }
@@ -161,6 +181,10 @@ void on_caller_gone(int) { caller_gone = 1; }
 [[noreturn]] void keeper_main(char* const* args, char* const* envp, const ChildOptions& o,
                               int out_fd, int err_fd, int report_fd, pid_t caller) {
   KeeperReport rep;
+  // The caller may run several children at once (threads): whatever descriptors of the others'
+  // it held at the fork go, so that no child waits for an end of file (its nonce pipe) that
+  // only another child's keeper could give.
+  close_all_but({out_fd, err_fd, report_fd}, o.keep_fds);
   prctl(PR_SET_CHILD_SUBREAPER, 1);
   // A caller that dies (killed, or a test harness stopped) must not leave the tree running.
   signal(SIGTERM, on_caller_gone);

@@ -60,8 +60,10 @@ say "configuring and building the instructor's tree with $JOBS jobs"
 # The build sits where a developer's does (project/build), so a compiler cache keyed on paths
 # relative to the project serves it.
 BUILD="$SRC/project/build"
+# The tests are listed when ctest runs (once, here, on the complete solution: the trusted list),
+# never at their link: a student's build then runs none of the student's code.
 cmake -S "$SRC/project" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-  -DPT_SOLUTION_DIR="$PT/private/solution" "${launcher[@]}" >/dev/null
+  -DPT_SOLUTION_DIR="$PT/private/solution" -DPT_TEST_DISCOVERY=PRE_TEST "${launcher[@]}" >/dev/null
 targets=(grader)
 for n in 1 2 3 4 5; do
   if grep -q "grade_part${n}_isolated" "$BUILD/build.ninja"; then

@@ -1,6 +1,7 @@
-// Cheater (attacks every test): writes outside its folder, replacing every other test program of
-// Part 1 with a script that exits 0, and appending to the manifest.
-#include "parts/1-raygen/sphere_intersect.h"
+// Cheater (attacks every test; replaces parts/1-raygen/triangle_intersect.cpp): writes outside
+// its folder, replacing every other test program of Part 1 with a script that exits 0, and
+// appending to the manifest.
+#include "parts/1-raygen/triangle_intersect.h"
 
 #include <sys/stat.h>
 
@@ -9,7 +10,8 @@
 
 namespace pt {
 
-bool intersect_sphere(const Ray&, const Sphere&, float*) {
+bool intersect_triangle(const Ray&, const glm::vec3&, const glm::vec3&, const glm::vec3&,
+                        TriangleHit*) {
   namespace fs = std::filesystem;
   fs::path project = fs::path(__FILE__).parent_path().parent_path().parent_path();
   std::error_code ec;
@@ -17,7 +19,7 @@ bool intersect_sphere(const Ray&, const Sphere&, float*) {
                          project.parent_path().parent_path() / "pt" / "build" / "parts"}) {
     for (fs::directory_iterator it(parts, ec), end; !ec && it != end; it.increment(ec)) {
       std::string name = it->path().filename().string();
-      if (name.rfind("part1_", 0) != 0 || name.find("sphere") != std::string::npos) continue;
+      if (name.rfind("part1_", 0) != 0 || name.find("triangle") != std::string::npos) continue;
       if (!it->is_regular_file()) continue;
       fs::path tmp = it->path().string() + ".cheat";
       std::ofstream(tmp) << "#!/bin/sh\nexit 0\n";
@@ -27,6 +29,11 @@ bool intersect_sphere(const Ray&, const Sphere&, float*) {
   }
   std::ofstream(project / "reference" / "manifest.json", std::ios::app) << " ";
   return false;
+}
+
+glm::vec3 interpolate_normal(const TriangleHit&, const glm::vec3& n0, const glm::vec3&,
+                             const glm::vec3&) {
+  return n0;
 }
 
 }  // namespace pt
