@@ -16,6 +16,7 @@
 #include "app/radiance.h"
 #include "app/render_job.h"
 #include "framework/image/image.h"
+#include "framework/image/image_module_preload.h"
 #include "framework/render/available_memory.h"
 #include "framework/lights/light_set.h"
 #include "framework/render/film.h"
@@ -96,6 +97,8 @@ int run(int argc, char** argv) {
       std::cerr << "warning: " << command.scene_path << ": " << w << "\n";
   }
 
+  // The image module loads beside the BVH build and the render, not after the last ray.
+  ImageModulePreload image_module(command.output_path);
   std::unique_ptr<RayQuery> query = make_ray_query(settings, scene);
   Film film(settings.width, settings.height);
   TileRenderOptions options;
@@ -103,6 +106,7 @@ int run(int argc, char** argv) {
   RenderReport report = render_scene(settings, scene, *query, &film, options);
   std::cout << summary_line(report) << "\n";
 
+  image_module.wait();
   write_film(command.output_path, film);
   std::cout << "wrote " << command.output_path << "\n";
   if (settings.adaptive) {

@@ -23,26 +23,7 @@ Distribution1D::Distribution1D(std::vector<float> func) : func_(std::move(func))
     for (int i = 0; i <= n; ++i) cdf_[i] = float(i) / n;
   }
   cdf_[n] = 1.0f;
-}
-
-int Distribution1D::find_cell(float u) const {
-  // Last i with cdf_[i] <= u, and never a cell of zero probability.
-  int i = int(std::upper_bound(cdf_.begin(), cdf_.end(), u) - cdf_.begin()) - 1;
-  i = std::clamp(i, 0, size() - 1);
-  while (i > 0 && cdf_[i + 1] <= cdf_[i]) --i;
-  while (i < size() - 1 && cdf_[i + 1] <= cdf_[i]) ++i;
-  return i;
-}
-
-float Distribution1D::sample_continuous(float u, float* pdf, int* cell) const {
-  int i = find_cell(u);
-  float width = cdf_[i + 1] - cdf_[i];
-  float du = width > 0.0f ? (u - cdf_[i]) / width : 0.5f;
-  du = std::clamp(du, 0.0f, 1.0f);
-  if (pdf) *pdf = func_[i] / integral_;
-  if (cell) *cell = i;
-  float x = (float(i) + du) / float(size());
-  return std::min(x, 0x1.fffffep-1f);
+  for (int i = 0; i < n; ++i) has_empty_cell_ = has_empty_cell_ || !(cdf_[i + 1] > cdf_[i]);
 }
 
 float Distribution1D::pdf_continuous(float x) const {

@@ -2,6 +2,7 @@
 // sample by (pixels in proportion to their power, triangles in proportion to their area).
 #pragma once
 
+#include <algorithm>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -20,14 +21,33 @@ class Distribution1D {
   /// Sum of the weights times the cell width: the integral of the unnormalised function.
   float integral() const { return integral_; }
   /// A point of [0,1) with density func(x)/integral; *pdf gets that density, *cell its cell.
-  float sample_continuous(float u, float* pdf, int* cell = nullptr) const;
+  /// Inline: a mesh light's every sample starts here.
+  float sample_continuous(float u, float* pdf, int* cell = nullptr) const {
+    const int i = find_cell(u);
+    const float width = cdf_[i + 1] - cdf_[i];
+    float du = width > 0.0f ? (u - cdf_[i]) / width : 0.5f;
+    du = std::clamp(du, 0.0f, 1.0f);
+    if (pdf) *pdf = func_[i] / integral_;
+    if (cell) *cell = i;
+    const float x = (float(i) + du) / float(size());
+    return std::min(x, 0x1.fffffep-1f);
+  }
   float pdf_continuous(float x) const;
 
  private:
-  int find_cell(float u) const;
+  int find_cell(float u) const {
+    // Last i with cdf_[i] <= u, and never a cell of zero probability.
+    int i = int(std::upper_bound(cdf_.begin(), cdf_.end(), u) - cdf_.begin()) - 1;
+    i = std::clamp(i, 0, size() - 1);
+    if (!has_empty_cell_) return i;  // the walks below would not move
+    while (i > 0 && cdf_[i + 1] <= cdf_[i]) --i;
+    while (i < size() - 1 && cdf_[i + 1] <= cdf_[i]) ++i;
+    return i;
+  }
   std::vector<float> func_;
   std::vector<float> cdf_;  ///< n+1 entries, cdf_[0] = 0, cdf_[n] = 1
   float integral_ = 0.0f;
+  bool has_empty_cell_ = false;  ///< whether some cdf_[i + 1] <= cdf_[i] (zero, or rounded away)
 };
 
 /// A piecewise-constant density on [0,1)^2 given on a width × height grid (row-major, row 0 at
