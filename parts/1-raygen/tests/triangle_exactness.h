@@ -254,6 +254,17 @@ class Cases {
   }
 
   /// The ray from o to `at`, sometimes with a finite tmax around the target (both sides of it).
+  /// A random triangle of the box, its unit normal (+z where it has none) and a uniform point of
+  /// it: where the rays that return to a surface or leave it start.
+  void triangle_and_point(glm::vec3 p[3], glm::vec3* n, glm::vec3* at) {
+    for (int i = 0; i < 3; ++i) p[i] = box(5);
+    *n = glm::normalize(glm::cross(p[1] - p[0], p[2] - p[0]));
+    const bool finite = std::isfinite(n->x) && std::isfinite(n->y) && std::isfinite(n->z);
+    if (!finite) *n = glm::vec3(0, 0, 1);
+    float a = rng_.next_float(), b = rng_.next_float();
+    if (a + b > 1) a = 1 - a, b = 1 - b;
+    *at = p[0] + a * (p[1] - p[0]) + b * (p[2] - p[0]);
+  }
   Case aim(const glm::vec3& o, const glm::vec3& at, const glm::vec3 p[3]) {
     Case c;
     c.ray.o = o;
@@ -299,12 +310,8 @@ class Cases {
   /// Rays that start just off the triangle (as a bounce or shadow ray does) and hit it at a
   /// small t: lift 1e-7 to 1e-2 along the normal, unit direction back at a point inside it.
   Case just_off() {
-    glm::vec3 p[3] = {box(5), box(5), box(5)};
-    glm::vec3 n = glm::normalize(glm::cross(p[1] - p[0], p[2] - p[0]));
-    if (!std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z)) n = glm::vec3(0, 0, 1);
-    float a = rng_.next_float(), b = rng_.next_float();
-    if (a + b > 1) a = 1 - a, b = 1 - b;
-    const glm::vec3 at = p[0] + a * (p[1] - p[0]) + b * (p[2] - p[0]);
+    glm::vec3 p[3], n, at;
+    triangle_and_point(p, &n, &at);
     Case c;
     do {  // a lift below the point's rounding leaves no ray: draw again
       const float lift = std::pow(10.0f, uni(-7, -2)) * (rng_.next_float() < 0.5f ? -1 : 1);
@@ -318,12 +325,8 @@ class Cases {
   /// point does): origin at most 1e-5 off the plane over a point inside, moving away from it at
   /// a clear angle, so the plane is at or behind the origin.
   Case leaving() {
-    glm::vec3 p[3] = {box(5), box(5), box(5)};
-    glm::vec3 n = glm::normalize(glm::cross(p[1] - p[0], p[2] - p[0]));
-    if (!std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z)) n = glm::vec3(0, 0, 1);
-    float a = rng_.next_float(), b = rng_.next_float();
-    if (a + b > 1) a = 1 - a, b = 1 - b;
-    const glm::vec3 at = p[0] + a * (p[1] - p[0]) + b * (p[2] - p[0]);
+    glm::vec3 p[3], n, at;
+    triangle_and_point(p, &n, &at);
     const float side = rng_.next_float() < 0.5f ? -1.0f : 1.0f;
     Case c;
     c.ray.o = at + side * std::pow(10.0f, uni(-9, -5)) * n;
