@@ -639,4 +639,23 @@ bool make_references(const Manifest& manifest, int part, const GradeOptions& opt
   return ok;
 }
 
+std::optional<bool> has_separate_solution(const std::string& build_dir) {
+  std::ifstream cache(fs::path(build_dir) / "CMakeCache.txt");
+  if (!cache) return std::nullopt;
+  std::string solution, home;
+  for (std::string line; std::getline(cache, line);) {
+    auto value_of = [&line](const std::string& key) -> std::optional<std::string> {
+      if (line.rfind(key + ":", 0) != 0) return std::nullopt;
+      const size_t eq = line.find('=');
+      return eq == std::string::npos ? std::string() : line.substr(eq + 1);
+    };
+    if (auto v = value_of("PT_SOLUTION_DIR")) solution = *v;
+    if (auto v = value_of("CMAKE_HOME_DIRECTORY")) home = *v;
+  }
+  if (solution.empty()) return false;
+  std::error_code ec1, ec2;
+  const fs::path a = fs::weakly_canonical(solution, ec1), b = fs::weakly_canonical(home, ec2);
+  return !(a == b);
+}
+
 }  // namespace pt::grader

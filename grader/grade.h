@@ -2,6 +2,7 @@
 // them with references, and score each step on its own checks.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -100,5 +101,11 @@ bool make_references(const Manifest& manifest, int part, const GradeOptions& opt
 
 /// The lines of `output` that say something is not implemented yet, each once.
 std::string not_implemented_lines(const std::string& output);
+
+/// Whether the CMake build tree `build_dir` was configured with a solution apart from its own
+/// sources (PT_SOLUTION_DIR), so that it has separate isolated targets; nothing when its
+/// CMakeCache.txt cannot be read. A grader graded another tree than its own (a mutant's scratch
+/// copy, by --build) must ask that tree, not the tree it was compiled in.
+std::optional<bool> has_separate_solution(const std::string& build_dir);
 
 }  // namespace pt::grader

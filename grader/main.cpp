@@ -2,6 +2,7 @@
 // `grader handout DIR` makes the student handout.
 #include <chrono>
 #include <filesystem>
+#include <optional>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -109,6 +110,10 @@ int main(int argc, char** argv) {
   batch->add_option("--max-check-seconds", batch_options.tuning.max_check_seconds,
                     "cap every test's and render's time (a test run)");
   CLI11_PARSE(app, argc, argv);
+  // The tree graded (--build may name another, a mutant's scratch copy) says whether it has
+  // separate isolated targets; the compiled-in answer is this grader's own tree's.
+  if (std::optional<bool> separate = has_separate_solution(options.build_dir))
+    options.isolated_separate = *separate;
 
   if (*gradescope) {
     try {

@@ -214,5 +214,24 @@ TEST(GraderManifest, TheProjectsRubricHasDistinctReferencesAndPointsInEveryStep)
   }
 }
 
+TEST(GraderTree, TheTreeGradedSaysWhetherItsSolutionIsSeparate) {
+  // A grader grading another build tree (a mutant's copy) reads that tree's configuration.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                    ("pt-grader-tree-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  EXPECT_FALSE(has_separate_solution(dir.string()).has_value()) << "no CMakeCache.txt";
+  auto write_cache = [&](const std::string& solution) {
+    std::ofstream(dir / "CMakeCache.txt") << "CMAKE_HOME_DIRECTORY:INTERNAL=" << dir.string()
+                                          << "\nPT_SOLUTION_DIR:PATH=" << solution << "\n";
+  };
+  write_cache("");
+  EXPECT_EQ(has_separate_solution(dir.string()), std::optional<bool>(false));
+  write_cache(dir.string());  // its own sources: the ordinary targets are the solution
+  EXPECT_EQ(has_separate_solution(dir.string()), std::optional<bool>(false));
+  write_cache("/somewhere/else/solution");
+  EXPECT_EQ(has_separate_solution(dir.string()), std::optional<bool>(true));
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace pt::grader
