@@ -31,6 +31,7 @@ class GraderGrade : public ::testing::Test {
     fs::create_directories(root_ / "scenes");
     write_estimate_exr((root_ / "reference" / "ref.exr").string(), testing::full_render(64, 1));
     write_estimate_exr((root_ / "scenes" / "good.exr").string(), testing::full_render(16, 2));
+    fs::copy_file(root_ / "scenes" / "good.exr", root_ / "scenes" / "stub.exr");
     write_estimate_exr((root_ / "scenes" / "dark.exr").string(),
                        testing::full_render(64, 3, 0.95f));
     for (const char* s : {"crash", "hang", "garbage"}) std::ofstream(root_ / "scenes" / s) << "x";
@@ -41,6 +42,8 @@ class GraderGrade : public ::testing::Test {
                              "  *crash) kill -SEGV $$ ;;\n"
                              "  *hang) sleep 60 ;;\n"
                              "  *garbage) echo garbage > \"$out\" ;;\n"
+                             "  *stub.exr) echo 'part 3 not implemented: f at parts/f.cpp:1' >&2;"
+                             " cp \"$1\" \"$out\" ;;\n"
                              "  *) cp \"$1\" \"$out\" ;;\n"
                              "esac\n";
     fs::permissions(script, fs::perms::owner_all);
@@ -106,6 +109,19 @@ TEST_F(GraderGrade, EachFailureStaysInItsOwnStep) {
   print_score_table(table, {p});
   EXPECT_NE(table.str().find("Total: 5/25"), std::string::npos) << table.str();
   EXPECT_EQ(validate_gradescope(gradescope_results({p}, RunInfo{})), "");
+}
+
+TEST_F(GraderGrade, ARenderThroughThisPartsStubsEarnsNothing) {
+  // The right image, made by a renderer that says it ran one of this part's stubs (Part 2's walk
+  // every leaf and so give correct images when Part 1 is the solution's): not the student's work.
+  nlohmann::ordered_json m;
+  std::ifstream(options_.manifest_path) >> m;
+  m["parts"][0]["steps"][0]["renders"][0]["scene"] = "scenes/stub.exr";
+  std::ofstream(options_.manifest_path) << m.dump(2);
+  PartResult p = grade_part(read_manifest(options_.manifest_path), 3, options_);
+  EXPECT_FALSE(p.steps[0].passed());
+  EXPECT_NE(p.steps[0].message.find("unwritten stubs"), std::string::npos) << p.steps[0].message;
+  EXPECT_NE(p.steps[0].message.find("parts/f.cpp:1"), std::string::npos) << p.steps[0].message;
 }
 
 TEST_F(GraderGrade, ASeedOffsetRendersWithOtherSeeds) {
