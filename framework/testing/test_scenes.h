@@ -105,6 +105,22 @@ inline double rectangle_form_factor(double x0, double x1, double y0, double y1, 
   return corner(x1, y1) - corner(x0, y1) - corner(x1, y0) + corner(x0, y0);
 }
 
+/// A square area light facing down (-z) at height `z`, centred over the origin, 2·half across:
+/// its panel (a quad of `material`, which should emit) and the scene light that agrees with it,
+/// so that light sampling samples the very panel a ray can hit.
+inline void add_square_ceiling_light(Scene& s, float half, float z, const glm::vec3& radiance,
+                                     uint32_t material) {
+  add_quad(s, {-half, -half, z}, {half, -half, z}, {half, half, z}, {-half, half, z}, material);
+  Light l;
+  l.kind = LightKind::area;
+  l.radiance = radiance;
+  l.position = glm::vec3(0.0f, 0.0f, z);
+  l.direction = glm::vec3(0.0f, 0.0f, -1.0f);
+  l.edge_u = glm::vec3(2.0f * half, 0.0f, 0.0f);
+  l.edge_v = glm::vec3(0.0f, 2.0f * half, 0.0f);
+  s.lights.push_back(l);
+}
+
 /// CBcoil's situation in miniature: a floor (albedo 0.5, z = 0) under a panel of emission 10,
 /// 0.8 × 0.6 at z = 0.5, that lies on an area light of radiance 5 turned the other way round
 /// (0.6 × 0.8), shining down. The emitter rule makes them one emitter: the panel's shape with

@@ -70,16 +70,7 @@ inline Scene panel_under_ceiling() {
   const uint32_t white = add_material(s, glm::vec3(0.5f));
   const uint32_t glow = add_material(s, glm::vec3(0.0f), glm::vec3(5.0f));
   add_quad(s, {-2, -2, 1}, {2, -2, 1}, {2, 2, 1}, {-2, 2, 1}, white);  // ceiling
-  add_quad(s, {-0.5f, -0.5f, 0.99f}, {0.5f, -0.5f, 0.99f}, {0.5f, 0.5f, 0.99f},
-           {-0.5f, 0.5f, 0.99f}, glow);  // panel
-  Light l;
-  l.kind = LightKind::area;
-  l.radiance = glm::vec3(5.0f);
-  l.position = glm::vec3(0.0f, 0.0f, 0.99f);
-  l.direction = glm::vec3(0.0f, 0.0f, -1.0f);
-  l.edge_u = glm::vec3(1.0f, 0.0f, 0.0f);
-  l.edge_v = glm::vec3(0.0f, 1.0f, 0.0f);
-  s.lights.push_back(l);
+  add_square_ceiling_light(s, 0.5f, 0.99f, glm::vec3(5.0f), glow);  // the panel and its light
   return s;
 }
 

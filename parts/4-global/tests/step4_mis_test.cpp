@@ -103,17 +103,8 @@ TEST(mis, takes_l_light_samples_and_l_bsdf_samples) {
   Scene s;
   const uint32_t white = test::add_material(s, glm::vec3(0.5f));
   const uint32_t glow = test::add_material(s, glm::vec3(0.0f), glm::vec3(5.0f));
-  test::add_quad(s, {-0.5f, -0.5f, 0.99f}, {0.5f, -0.5f, 0.99f}, {0.5f, 0.5f, 0.99f},
-                 {-0.5f, 0.5f, 0.99f}, glow);  // the panel, facing down
+  test::add_square_ceiling_light(s, 0.5f, 0.99f, glm::vec3(5.0f), glow);  // panel, facing down
   test::add_quad(s, {-2, -2, 0}, {2, -2, 0}, {2, 2, 0}, {-2, 2, 0}, white);  // the floor
-  Light light;
-  light.kind = LightKind::area;
-  light.radiance = glm::vec3(5.0f);
-  light.position = glm::vec3(0.0f, 0.0f, 0.99f);
-  light.direction = glm::vec3(0.0f, 0.0f, -1.0f);
-  light.edge_u = glm::vec3(1.0f, 0.0f, 0.0f);
-  light.edge_v = glm::vec3(0.0f, 1.0f, 0.0f);
-  s.lights.push_back(light);
   for (int l : {1, 4}) {
     SCOPED_TRACE("-l " + std::to_string(l));
     test::Rig rig(s);
