@@ -104,7 +104,7 @@ TEST_F(CliTest, HelpListsTheCourseFlagsAndExitsZero) {
   for (const char* flag : {"--samples", "--light-samples", "--threads", "--max-depth", "--resolution",
                            "--file", "--hemisphere", "--adaptive", "--env", "--aperture",
                            "--focal-distance", "--cell", "--info", "--seed", "--bvh", "--bvh-width", "--leaf-size",
-                           "--normals", "--integrator", "--file-camera", "--course-view"})
+                           "--normals", "--integrator", "--file-camera", "--course-view", "--stopping-rule"})
     EXPECT_NE(run.out.find(flag), std::string::npos) << flag << " missing from:\n" << run.out;
 }
 
@@ -128,6 +128,8 @@ TEST_F(CliTest, BadInputIsNamedAndNeverACrash) {
       {"-m -1 -f a.png " + s, 2, "--max-depth"},
       {"-a 0 0.05 -f a.png " + s, 2, "--adaptive"},
       {"-a 16 0 -f a.png " + s, 2, "--adaptive"},
+      {"-a 16 0.05 --stopping-rule fair -f a.png " + s, 2, "--stopping-rule"},
+      {"--stopping-rule course -f a.png " + s, 2, "--stopping-rule"},  // no -a: nothing to stop
       {"-d 0 -f a.png " + s, 2, "--focal-distance"},
       {"--bvh octree -f a.png " + s, 2, "--bvh"},
       {"--bvh-width 3 -f a.png " + s, 2, "--bvh-width"},

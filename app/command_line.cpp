@@ -137,6 +137,12 @@ int parse_command_line(int argc, char** argv, CommandLine* command, std::ostream
   app.add_option("-a,--adaptive", adaptive,
                  "Adaptive sampling: check convergence every BATCH samples, stop at tolerance TOL")
       ->expected(2)->type_name("BATCH TOL");
+  std::string stopping_rule = stopping_rule_name(s.stopping_rule);
+  app.add_option("--stopping-rule", stopping_rule,
+                 "With -a: which samples decide when a pixel stops (split: one in four decides, the "
+                 "others form the value, unbiased; course: every sample does both, the course's "
+                 "rule). Default: the assignment's (reference/manifest.json)")
+      ->check(CLI::IsMember({"split", "course"}))->capture_default_str();
   app.add_option("-e,--env", s.environment_map, "Environment map (image-based infinite light)")
       ->type_name("FILE");
   app.add_option("-b,--aperture", s.lens_radius, "Thin-lens aperture radius (0: pinhole)")
@@ -191,6 +197,9 @@ int parse_command_line(int argc, char** argv, CommandLine* command, std::ostream
       s.has_cell = true;
       s.cell_x = cell[0], s.cell_y = cell[1], s.cell_w = cell[2], s.cell_h = cell[3];
     }
+    s.stopping_rule = *parse_stopping_rule(stopping_rule);
+    if (app.count("--stopping-rule") && adaptive.empty())
+      throw UsageError("--stopping-rule says when an adaptive pixel stops: it needs -a BATCH TOL");
     if (!adaptive.empty()) {
       s.adaptive = true;
       s.adaptive_batch = int(std::min(adaptive[0], 1e9));

@@ -18,6 +18,7 @@ PixelFn make_pixel_fn(const RenderSettings& settings, const Camera& camera,
   adaptive.max_samples = settings.samples_per_pixel;
   adaptive.batch = settings.adaptive_batch;
   adaptive.tolerance = settings.adaptive_tolerance;
+  adaptive.rule = settings.stopping_rule;
   return [&settings, &camera, &radiance, adaptive](int x, int y, Rng& rng, TraceContext& context,
                                                    PixelStats* stats) {
     RadianceFn sample = [&radiance, &context](const Ray& ray, Rng& r) {

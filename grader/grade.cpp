@@ -1,14 +1,19 @@
 #include "grader/grade.h"
 
+#include <algorithm>
 #include <cctype>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <set>
 #include <sstream>
+#include <thread>
+
+#include <unistd.h>
 
 #include <pugixml.hpp>
 
@@ -17,6 +22,7 @@
 #include "framework/process/child_process.h"
 #include "framework/stats/variance_consistency.h"
 #include "grader/compare.h"
+#include "grader/reference_mean.h"
 
 namespace fs = std::filesystem;
 
@@ -126,7 +132,7 @@ std::vector<CheckResult> run_sealed_tests(int part, const PartSpec& spec,
   for (const TrustedTest& t : *options.trusted) {
     if (t.part != part) continue;
     mine.push_back(&t);
-    runs.push_back({t.executable, t.gtest, spec.test_timeout});
+    runs.push_back({t.executable, t.gtest, load_scaled_limit(spec.test_timeout)});
   }
   std::vector<SealedTest> sealed = pt::grader::run_sealed_tests(runs, *options.sandbox);
   std::vector<CheckResult> checks;
@@ -158,7 +164,7 @@ std::vector<CheckResult> run_tests(int part, const PartSpec& spec, const GradeOp
   fs::path junit = fs::absolute(options.out_dir) / ("part" + std::to_string(part) + "-tests.xml");
   fs::remove(junit);
   char timeout[32];
-  std::snprintf(timeout, sizeof timeout, "%g", spec.test_timeout);
+  std::snprintf(timeout, sizeof timeout, "%.0f", std::ceil(load_scaled_limit(spec.test_timeout)));
   // The whole run has a time limit too, so that even a wedged ctest cannot stop the grader.
   ChildResult c = run_child({"ctest", "--test-dir", options.build_dir, "-L", part_label(part, options),
                              "--timeout", timeout, "--output-junit", junit.string(), "-j2"},
@@ -361,8 +367,9 @@ CheckResult grade_render(const Manifest& manifest, const RenderCheck& check,
   std::vector<std::string> argv = {pathtracer_for(check.part, options)};
   argv.insert(argv.end(), check.args.begin(), check.args.end());
   argv.insert(argv.end(), {"--seed", std::to_string(r.seed), "-f", out.string(), scene.string()});
-  ChildResult c = options.sandbox ? run_child(argv, options.sandbox->options(scratch, check.timeout))
-                                  : run_child(argv, check.timeout);
+  const double limit = load_scaled_limit(check.timeout);
+  ChildResult c = options.sandbox ? run_child(argv, options.sandbox->options(scratch, limit))
+                                  : run_child(argv, limit);
   struct ScratchCleanup {
     const Sandbox* sandbox;
     std::string dir;
@@ -446,6 +453,15 @@ PartResult grade_part(const Manifest& manifest, int part, const GradeOptions& op
   }
   fs::create_directories(options.out_dir);
   result.rests_on = rests_on_line(manifest, part, options);
+  // Part 5's rule is the instructor's choice: the student is told which one is graded.
+  bool has_rule = false;
+  for (const StepSpec& st : spec->steps)
+    for (const auto* list : {&st.renders, &st.other_rule_renders})
+      for (const RenderCheck& r : *list) has_rule = has_rule || !r.stopping_rule.empty();
+  if (has_rule)
+    result.rests_on += std::string(result.rests_on.empty() ? "" : "\n") + "Part " +
+                       std::to_string(part) + " is graded on the " + manifest.stopping_rule +
+                       " stopping rule (reference/manifest.json's stopping_rule).";
   if (options.build) {
     ChildResult c = run_child({"cmake", "--build", options.build_dir, "--target",
                                part_target(part, options), "-j2"},
@@ -600,7 +616,9 @@ bool make_references(const Manifest& manifest, int part, const GradeOptions& opt
   bool ok = true;
   for (const PartSpec& p : manifest.parts) {
     if (part != 0 && p.part != part) continue;
-    for (const RenderCheck* checkp : p.renders()) {
+    // Every stopping rule's references, so that the instructor's choice in the manifest needs
+    // nothing remade.
+    for (const RenderCheck* checkp : p.renders_of_every_rule()) {
       const RenderCheck& check = *checkp;
       fs::path scene = scene_path(check, options);
       if (check.course_scene && !fs::exists(scene)) {
@@ -609,33 +627,58 @@ bool make_references(const Manifest& manifest, int part, const GradeOptions& opt
       }
       fs::path out = fs::path(options.source_dir) / check.reference;
       fs::create_directories(out.parent_path());
-      std::vector<std::string> args = check.reference_args;
-      args.insert(args.end(), {"--seed", std::to_string(check.reference_seed), "-f"});
-      std::vector<std::string> argv = {options.pathtracer};
-      argv.insert(argv.end(), args.begin(), args.end());
-      argv.insert(argv.end(), {out.string(), scene.string()});
-      std::cerr << check.name << ": " << command_line(argv) << "\n";
-      ChildResult c = run_child(argv, 3600.0);
-      if (!c.ok()) {
-        std::cerr << check.name << ": the reference render " << c.describe() << "\n"
-                  << output_excerpt(c.output) << "\n";
+      // One render, or several (seeds reference_seed, +1, ...) whose mean is the reference,
+      // made in a folder of their own (an adaptive render writes its sample-rate image beside it).
+      std::vector<RenderEstimate> runs;
+      double seconds = 0.0;
+      bool failed = false;
+      const fs::path run_dir = fs::temp_directory_path() /
+                               ("pt-reference-" + std::to_string(::getpid()) + "-" + check.name);
+      fs::create_directories(run_dir);
+      for (int k = 0; k < check.reference_runs && !failed; ++k) {
+        const fs::path file = run_dir / ("run" + std::to_string(k) + ".exr");
+        std::vector<std::string> argv = {options.pathtracer};
+        argv.insert(argv.end(), check.reference_args.begin(), check.reference_args.end());
+        argv.insert(argv.end(), {"--seed", std::to_string(check.reference_seed + uint64_t(k)), "-f",
+                                 file.string(), scene.string()});
+        std::cerr << check.name << ": " << command_line(argv) << "\n";
+        ChildResult c = run_child(argv, 3600.0);
+        seconds += c.seconds;
+        try {
+          if (!c.ok()) throw std::runtime_error("the reference render " + c.describe() + "\n" +
+                                                output_excerpt(c.output));
+          runs.push_back(read_estimate_exr(file.string()));  // a reference must carry its variance
+        } catch (const std::exception& e) {
+          std::cerr << check.name << ": " << e.what() << "\n";
+          failed = true;
+        }
+      }
+      if (!failed && check.reference_runs == 1)
+        fs::copy_file(run_dir / "run0.exr", out, fs::copy_options::overwrite_existing);
+      fs::remove_all(run_dir);
+      if (failed) {
         ok = false;
         continue;
       }
       try {
-        read_estimate_exr(out.string());  // a reference must carry its variance
+        if (check.reference_runs > 1) write_estimate_exr(out.string(), mean_of_renders(runs));
         nlohmann::ordered_json made;
         // Paths relative to the project, so the record reads the same on every machine.
-        std::string relative_command = "pathtracer " + command_line(args) + " " +
+        std::string relative_command = "pathtracer " + command_line(check.reference_args) +
+                                       " --seed " + std::to_string(check.reference_seed) + " -f " +
                                        check.reference + " " +
                                        (check.course_scene ? "../shared/scenes/cs184/" : "") +
                                        check.scene;
         made["command"] = relative_command;
         made["seed"] = check.reference_seed;
-        made["seconds"] = std::round(c.seconds * 10.0) / 10.0;
+        if (check.reference_runs > 1)
+          made["runs"] = "the mean of " + std::to_string(check.reference_runs) +
+                         " renders, seeds " + std::to_string(check.reference_seed) + " to " +
+                         std::to_string(check.reference_seed + uint64_t(check.reference_runs) - 1);
+        made["seconds"] = std::round(seconds * 10.0) / 10.0;
         made["crc32"] = file_checksum(out.string());
         record_reference(options.manifest_path, check.name, made);
-        std::cerr << check.name << ": made in " << fixed(c.seconds) << " s, crc32 "
+        std::cerr << check.name << ": made in " << fixed(seconds) << " s, crc32 "
                   << made["crc32"].get<std::string>() << "\n";
       } catch (const std::exception& e) {
         std::cerr << check.name << ": " << e.what() << "\n";
@@ -646,23 +689,45 @@ bool make_references(const Manifest& manifest, int part, const GradeOptions& opt
   return ok;
 }
 
-std::optional<bool> has_separate_solution(const std::string& build_dir) {
+double load_scaled_limit(double seconds, double load_average, int cores) {
+  if (!(load_average > 0.0) || cores < 1) return seconds;
+  return seconds * std::clamp(load_average / double(cores), 1.0, kMaxLoadFactor);
+}
+
+double load_scaled_limit(double seconds) {
+  double load[1] = {0.0};
+  if (getloadavg(load, 1) != 1) return seconds;
+  return load_scaled_limit(seconds, load[0], int(std::thread::hardware_concurrency()));
+}
+
+std::optional<std::string> cmake_cache_value(const std::string& build_dir, const std::string& key) {
   std::ifstream cache(fs::path(build_dir) / "CMakeCache.txt");
   if (!cache) return std::nullopt;
-  std::string solution, home;
   for (std::string line; std::getline(cache, line);) {
-    auto value_of = [&line](const std::string& key) -> std::optional<std::string> {
-      if (line.rfind(key + ":", 0) != 0) return std::nullopt;
-      const size_t eq = line.find('=');
-      return eq == std::string::npos ? std::string() : line.substr(eq + 1);
-    };
-    if (auto v = value_of("PT_SOLUTION_DIR")) solution = *v;
-    if (auto v = value_of("CMAKE_HOME_DIRECTORY")) home = *v;
+    if (line.rfind(key + ":", 0) != 0) continue;
+    const size_t eq = line.find('=');
+    return eq == std::string::npos ? std::string() : line.substr(eq + 1);
   }
-  if (solution.empty()) return false;
+  return std::string();
+}
+
+std::optional<bool> has_separate_solution(const std::string& build_dir) {
+  const std::optional<std::string> solution = cmake_cache_value(build_dir, "PT_SOLUTION_DIR");
+  if (!solution) return std::nullopt;
+  if (solution->empty()) return false;
+  const std::string home = cmake_cache_value(build_dir, "CMAKE_HOME_DIRECTORY").value_or("");
   std::error_code ec1, ec2;
-  const fs::path a = fs::weakly_canonical(solution, ec1), b = fs::weakly_canonical(home, ec2);
+  const fs::path a = fs::weakly_canonical(*solution, ec1), b = fs::weakly_canonical(home, ec2);
   return !(a == b);
+}
+
+std::string stopping_rule_mismatch(const Manifest& manifest, const std::string& build_dir) {
+  const std::optional<std::string> rule = cmake_cache_value(build_dir, "PT_ASSIGNMENT_STOPPING_RULE");
+  if (!rule || rule->empty() || *rule == manifest.stopping_rule) return "";
+  return "the build in " + build_dir + " was configured for Part 5's " + *rule +
+         " stopping rule, but the manifest asks for the " + manifest.stopping_rule +
+         " rule: configure it again (cmake -B " + build_dir + " -DPT_STOPPING_RULE=" +
+         manifest.stopping_rule + ") so that its tests and renders are the assignment's";
 }
 
 }  // namespace pt::grader

@@ -108,4 +108,25 @@ std::string not_implemented_lines(const std::string& output);
 /// copy, by --build) must ask that tree, not the tree it was compiled in.
 std::optional<bool> has_separate_solution(const std::string& build_dir);
 
+/// The most a check's time limit is stretched for a busy machine.
+constexpr double kMaxLoadFactor = 8.0;
+
+/// A check's wall-time limit on a machine shared with other work: `seconds` (what it is given on
+/// an idle machine) times the machine's load per core over the last minute, between 1 and
+/// kMaxLoadFactor. Correct code on a busy machine is then not failed for time the machine did not
+/// give it (a render at load 9 on 2 cores took over the 60 s it was given), and an endless loop
+/// still ends.
+double load_scaled_limit(double seconds, double load_average, int cores);
+
+/// The same at this machine's load average now (`seconds` itself when it cannot be read).
+double load_scaled_limit(double seconds);
+
+/// A CMake build tree's cached value of `key` ("" when it has none); nothing when its
+/// CMakeCache.txt cannot be read.
+std::optional<std::string> cmake_cache_value(const std::string& build_dir, const std::string& key);
+
+/// Why the build tree cannot grade Part 5 under the manifest's stopping rule (it was configured
+/// for the other one: its tests and the renderer's default hold the other rule), or "".
+std::string stopping_rule_mismatch(const Manifest& manifest, const std::string& build_dir);
+
 }  // namespace pt::grader

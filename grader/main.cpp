@@ -189,6 +189,13 @@ int main(int argc, char** argv) {
     std::cerr << "grader: say which part (--part N) or --all\n" << app.help();
     return 2;
   }
+  if (all || part == 5) {
+    const std::string mismatch = stopping_rule_mismatch(manifest, options.build_dir);
+    if (!mismatch.empty()) {
+      std::cerr << "grader: " << mismatch << "\n";
+      return 2;
+    }
+  }
   if (options.isolated && !holds_solution(solution_dir)) {
     std::cerr << "grader: --isolated links the complete solution of the other parts, and "
               << solution_dir << " holds none (a handout). Configure the build with "
@@ -198,7 +205,7 @@ int main(int argc, char** argv) {
   for (const PartSpec& p : manifest.parts) {
     for (const RenderCheck* r : p.renders()) {
       int64_t seed = int64_t(r->seed) + options.seed_offset;
-      if (seed < 0 || uint64_t(seed) == r->reference_seed) {
+      if (seed < 0 || r->is_reference_seed(uint64_t(seed))) {
         std::cerr << "grader: --seed-offset " << options.seed_offset << " gives " << r->name
                   << " the seed " << seed << ", "
                   << (seed < 0 ? "below 0" : "its reference's own: the same random numbers") << "\n";

@@ -55,6 +55,13 @@ std::vector<const RenderCheck*> PartSpec::renders() const {
   return all;
 }
 
+std::vector<const RenderCheck*> PartSpec::renders_of_every_rule() const {
+  std::vector<const RenderCheck*> all = renders();
+  for (const StepSpec& s : steps)
+    for (const RenderCheck& r : s.other_rule_renders) all.push_back(&r);
+  return all;
+}
+
 double PartSpec::points() const {
   double sum = 0.0;
   for (const StepSpec& s : steps) sum += s.points;
@@ -128,8 +135,9 @@ Manifest read_manifest(const std::string& path) {
           std::string scene_name = field<std::string>(path, sw, rj, "name");
           r.name = st.test_prefix() + "render." + scene_name;
           std::string rw = sw + ", render \"" + scene_name + "\"";
-          if (m.find_render(r.name) || std::any_of(st.renders.begin(), st.renders.end(),
-                                                   [&](const RenderCheck& o) { return o.name == r.name; }))
+          auto same_name = [&](const RenderCheck& o) { return o.name == r.name; };
+          if (m.find_render(r.name) || std::any_of(st.renders.begin(), st.renders.end(), same_name) ||
+              std::any_of(st.other_rule_renders.begin(), st.other_rule_renders.end(), same_name))
             bad(path, rw, "two renders of one name");
           r.scene = field<std::string>(path, rw, rj, "scene");
           r.course_scene = optional(rj, "course_scene", false);
@@ -148,8 +156,18 @@ Manifest read_manifest(const std::string& path) {
             bad(path, rw, "noise_limit is a factor above 1 (or 0: no noise check)");
           r.reference = field<std::string>(path, rw, rj, "reference");
           if (rj.contains("made")) r.checksum = optional(rj.at("made"), "crc32", std::string());
-          if (r.seed == r.reference_seed)
-            bad(path, rw, "the graded render must use other random numbers than its reference");
+          r.reference_runs = optional(rj, "reference_runs", 1);
+          if (r.reference_runs < 1 || r.reference_runs > 1000)
+            bad(path, rw, "reference_runs is the number of renders the reference averages: 1 to 1000");
+          if (r.is_reference_seed(r.seed))
+            bad(path, rw, "the graded render must use other random numbers than its reference "
+                          "(its seed is one of the reference's)");
+          r.stopping_rule = optional(rj, "stopping_rule", std::string());
+          if (!r.stopping_rule.empty() && r.stopping_rule != "split" && r.stopping_rule != "course")
+            bad(path, rw, "stopping_rule must be \"split\" or \"course\" (got \"" +
+                              r.stopping_rule + "\")");
+          if (!r.stopping_rule.empty() && r.kind != "adaptive")
+            bad(path, rw, "only an adaptive render has a stopping rule");
           if (rj.contains("rests_on_steps")) {
             r.rests_on_steps = field<std::vector<int>>(path, rw, rj, "rests_on_steps");
             for (int k : r.rests_on_steps)
@@ -159,7 +177,11 @@ Manifest read_manifest(const std::string& path) {
           } else {
             for (int k = 1; k < st.step; ++k) r.rests_on_steps.push_back(k);
           }
-          st.renders.push_back(r);
+          // A render of the other stopping rule keeps its reference but is not graded.
+          if (r.stopping_rule.empty() || r.stopping_rule == m.stopping_rule)
+            st.renders.push_back(r);
+          else
+            st.other_rule_renders.push_back(r);
         }
         p.steps.push_back(st);
       }

@@ -33,6 +33,20 @@ struct RenderCheck {
   /// manifest's `rests_on_steps`; every earlier step when it says nothing). A failing render's
   /// message gives their state.
   std::vector<int> rests_on_steps;
+  /// Part 5: the stopping rule this render is graded under ("split" or "course"); empty for
+  /// renders every assignment grades. A render of the other rule is kept (its reference stays
+  /// made) but not graded.
+  std::string stopping_rule;
+  /// How many renders of reference_args (seeds reference_seed, reference_seed + 1, ...) the
+  /// reference is the mean of: more than one where only a render with the graded settings has the
+  /// graded render's expectation (the course's stopping rule is biased by design, so its
+  /// reference is made with that rule at those settings, averaged to bring its noise down).
+  int reference_runs = 1;
+
+  /// Whether `seed` is one of the reference's own seeds (the same random numbers).
+  bool is_reference_seed(uint64_t seed) const {
+    return seed >= reference_seed && seed - reference_seed < uint64_t(reference_runs);
+  }
 };
 
 /// One step of a part: what the student writes in it, its points and its renders. Its tests
@@ -44,7 +58,8 @@ struct StepSpec {
   double points = 0.0;
   std::vector<std::string> functions;   ///< "parts/3-direct/direct_lighting.cpp: estimate_direct_importance"
   std::string rests_on;                 ///< what its checks call besides its functions, in words
-  std::vector<RenderCheck> renders;
+  std::vector<RenderCheck> renders;     ///< graded under the manifest's stopping rule
+  std::vector<RenderCheck> other_rule_renders;  ///< of the other stopping rule: not graded
 
   std::string full_name() const;        ///< "part3.step4.importance"
   std::string test_prefix() const;      ///< "part3.step4."
@@ -60,7 +75,9 @@ struct PartSpec {
   std::vector<StepSpec> steps;
 
   const StepSpec* find_step(int step) const;
-  std::vector<const RenderCheck*> renders() const;
+  std::vector<const RenderCheck*> renders() const;  ///< the graded ones
+  /// Also the renders of the other stopping rule (their references are made all the same).
+  std::vector<const RenderCheck*> renders_of_every_rule() const;
   double points() const;
 };
 

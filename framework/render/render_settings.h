@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <string>
 
+#include "framework/render/stopping_rule.h"
+
 namespace pt {
 
 /// Children a node of the wide BVH (app/accel) has: the --bvh-width that asks
@@ -34,6 +36,7 @@ struct RenderSettings {
   bool adaptive = false;                ///< -a given
   int adaptive_batch = 32;              ///< -a BATCH
   float adaptive_tolerance = 0.05f;     ///< -a TOL
+  StoppingRule stopping_rule = kAssignmentStoppingRule;  ///< --stopping-rule (with -a)
   std::string environment_map;          ///< -e: image-based infinite light
   float lens_radius = 0.0f;             ///< -b: thin-lens aperture
   float focal_distance = -1.0f;         ///< -d: focal distance; negative keeps the scene's

@@ -5,6 +5,7 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -247,6 +248,63 @@ TEST(GraderTree, TheTreeGradedSaysWhetherItsSolutionIsSeparate) {
   write_cache("/somewhere/else/solution");
   EXPECT_EQ(has_separate_solution(dir.string()), std::optional<bool>(true));
   std::filesystem::remove_all(dir);
+}
+
+TEST_F(GraderGrade, OnlyTheAssignmentsStoppingRuleIsGraded) {
+  // Part 5's two renders, one per rule: the manifest's rule grades one, the other keeps its
+  // reference (made all the same) and is not graded.
+  auto manifest_with = [&](const std::string& rule, const std::string& extra) {
+    std::ofstream(options_.manifest_path) << R"({"stopping_rule": ")" + rule + R"(", "parts": [
+      {"part": 5, "steps": [{"step": 1, "name": "loop", "points": 1, "renders": [
+        {"name": "a", "scene": "s", "kind": "adaptive", "args": [], "reference_args": [],
+         "seed": 7, "reference_seed": 1, "reference": "r", "stopping_rule": "split"},
+        {"name": "b", "scene": "s", "kind": "adaptive", "args": [], "reference_args": [],
+         "seed": 7, "reference_seed": 1000, "reference_runs": 64, "reference": "r2",
+         "stopping_rule": "course")" + extra + R"(}]}]}]})";
+    return read_manifest(options_.manifest_path);
+  };
+  for (const char* rule : {"split", "course"}) {
+    const Manifest m = manifest_with(rule, "");
+    ASSERT_EQ(m.parts[0].renders().size(), 1u);
+    EXPECT_EQ(m.parts[0].renders()[0]->stopping_rule, rule);
+    EXPECT_EQ(m.parts[0].renders_of_every_rule().size(), 2u);
+  }
+  EXPECT_EQ(manifest_with("course", "").parts[0].renders()[0]->reference_runs, 64);
+  // A graded seed among the reference's own (1000 to 1063) would share its random numbers.
+  try {
+    manifest_with("course", R"(, "seed": 1010)");
+    ADD_FAILURE() << "a graded seed among the reference's was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("one of the reference's"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(manifest_with("fair", ""), std::runtime_error);
+}
+
+TEST(GraderTree, APart5BuildOfAnotherStoppingRuleIsNamed) {
+  // The stopping rule is compiled into the build (its tests, the renderer's default): grading
+  // Part 5 under the other rule would hold the student to the wrong one.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                    ("pt-grader-rule-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  Manifest m;
+  m.stopping_rule = "split";
+  EXPECT_EQ(stopping_rule_mismatch(m, dir.string()), "") << "no CMakeCache.txt: nothing to say";
+  std::ofstream(dir / "CMakeCache.txt") << "PT_ASSIGNMENT_STOPPING_RULE:INTERNAL=course\n";
+  const std::string why = stopping_rule_mismatch(m, dir.string());
+  EXPECT_NE(why.find("course stopping rule"), std::string::npos) << why;
+  EXPECT_NE(why.find("asks for the split rule"), std::string::npos) << why;
+  m.stopping_rule = "course";
+  EXPECT_EQ(stopping_rule_mismatch(m, dir.string()), "");
+  std::filesystem::remove_all(dir);
+}
+
+TEST(GraderTimeLimits, ABusyMachineStretchesTheLimitWithinBounds) {
+  EXPECT_DOUBLE_EQ(load_scaled_limit(60.0, 0.5, 2), 60.0);   // idle: the limit as given
+  EXPECT_DOUBLE_EQ(load_scaled_limit(60.0, 9.0, 2), 270.0);  // 4.5 processes a core
+  EXPECT_DOUBLE_EQ(load_scaled_limit(60.0, 500.0, 2), 60.0 * kMaxLoadFactor);  // an endless loop ends
+  EXPECT_DOUBLE_EQ(load_scaled_limit(60.0, std::nan(""), 2), 60.0);
+  EXPECT_DOUBLE_EQ(load_scaled_limit(60.0, 4.0, 0), 60.0);
+  EXPECT_GE(load_scaled_limit(60.0), 60.0);
 }
 
 }  // namespace

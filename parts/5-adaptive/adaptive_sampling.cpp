@@ -21,9 +21,10 @@ bool pixel_converged(const IlluminanceStats& decision, long estimate_count, floa
   return false;
 }
 
-// The pixel's value is the mean of the estimate samples up to a stopping time that depends only
-// on the decision samples, which are independent of them: conditioned on when it stops, that
-// mean is still a mean of independent samples, so its expectation is the pixel's true value.
+// Under the split rule the pixel's value is the mean of the estimate samples up to a stopping time
+// that depends only on the decision samples, which are independent of them: conditioned on when
+// it stops, that mean is still a mean of independent samples, so its expectation is the pixel's
+// true value. Under the course's rule the same loop decides on the samples it averages.
 int sample_pixel_adaptive(const AdaptiveSettings& settings, const PixelSampleFn& next_sample,
                           PixelStats* estimate, const ConvergenceRule& converged) {
   // BEGIN SOLUTION
@@ -33,21 +34,20 @@ int sample_pixel_adaptive(const AdaptiveSettings& settings, const PixelSampleFn&
   while (taken < settings.max_samples) {
     for (int i = 0; i < batch && taken < settings.max_samples; ++i, ++taken) {
       glm::vec3 L = next_sample();
-      if (is_decision_sample(taken))
-        decision.add(illuminance(L));
-      else
-        estimate->add(L);
+      if (sample_decides(settings.rule, taken)) decision.add(illuminance(L));
+      if (sample_counts(settings.rule, taken)) estimate->add(L);
     }
     if (converged(decision, estimate->count, settings.tolerance)) break;
   }
   return taken;
   // END SOLUTION
   // STUDENT: take samples in batches of settings.batch, each the radiance next_sample()
-  // returns. Sample number `taken` (from 0) goes only into an IlluminanceStats of
-  // decision samples when is_decision_sample(taken), otherwise only into *estimate. After each
-  // batch stop if converged(decision, estimate->count, settings.tolerance) says so (the rule you
-  // are handed: the renderer hands you your pixel_converged). Never take more than
-  // settings.max_samples. Return how many samples you took, decision samples included.
+  // returns. Sample number `taken` (from 0) goes into an IlluminanceStats of decision samples
+  // when sample_decides(settings.rule, taken), and into *estimate when
+  // sample_counts(settings.rule, taken). After each batch stop if converged(decision,
+  // estimate->count, settings.tolerance) says so (the rule you are handed: the renderer hands
+  // you your pixel_converged). Never take more than settings.max_samples. Return how many
+  // samples you took, decision samples included.
   PT_STUDENT_TODO("part 5", "sample_pixel_adaptive");
   (void)settings, (void)next_sample, (void)converged;
   estimate->add(glm::vec3(0.0f));

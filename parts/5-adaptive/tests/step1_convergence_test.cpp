@@ -1,5 +1,7 @@
-// Part 5, step 1 (convergence): the stopping rule on hand-computed cases. Where the answers are
-// wrong, the test names the mistake whose rule gives exactly the answers it got, if one does.
+// Part 5, step 1 (convergence): the stopping rule on hand-computed cases, shaped as the
+// assignment's rule hands them over (split: decision and estimate samples apart; course: the same
+// samples, so the two counts are equal). Where the answers are wrong, the test names the mistake
+// whose rule gives exactly the answers it got, if one does.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -41,36 +43,51 @@ bool half_width_rule(const IlluminanceStats& d, long n, float tol,
 }
 
 const std::vector<Mistake>& mistakes() {
-  static const std::vector<Mistake> all = {
-      {"the variance used as the standard deviation (σ is the square root of decision.variance())?",
-       [](const IlluminanceStats& d, long n, float t) {
-         return half_width_rule(d, n, t, [](double v, double m, double) { return 1.96 * v / std::sqrt(m); });
-       }},
-      {"the decision samples counted in n_E? (the half-width is the reported estimate's: n_E = "
-       "estimate_count alone)",
-       [](const IlluminanceStats& d, long n, float t) {
-         return half_width_rule(d, n, t, [](double v, double m, double nd) { return 1.96 * std::sqrt(v / (m + nd)); });
-       }},
-      {"the decision count under the root? (the half-width is the estimate's: √estimate_count)",
-       [](const IlluminanceStats& d, long n, float t) {
-         return half_width_rule(d, n, t, [](double v, double, double nd) { return 1.96 * std::sqrt(v / nd); });
-       }},
-      {"σ divided by n_E, not by √n_E?",
-       [](const IlluminanceStats& d, long n, float t) {
-         return half_width_rule(d, n, t, [](double v, double m, double) { return 1.96 * std::sqrt(v) / m; });
-       }},
-      {"the factor 1.96 of a 95% interval left out?",
-       [](const IlluminanceStats& d, long n, float t) {
-         return half_width_rule(d, n, t, [](double v, double m, double) { return std::sqrt(v / m); });
-       }},
-  };
+  static const Mistake variance_as_std{
+      "the variance used as the standard deviation (σ is the square root of decision.variance())?",
+      [](const IlluminanceStats& d, long n, float t) {
+        return half_width_rule(d, n, t, [](double v, double m, double) { return 1.96 * v / std::sqrt(m); });
+      }};
+  static const Mistake decision_in_count{
+      kAssignmentStoppingRule == StoppingRule::course
+          ? "the samples counted twice? (n = estimate_count: under the course's rule the decision "
+            "samples are the estimate's own)"
+          : "the decision samples counted in n_E? (the half-width is the reported estimate's: n_E "
+            "= estimate_count alone)",
+      [](const IlluminanceStats& d, long n, float t) {
+        return half_width_rule(d, n, t, [](double v, double m, double nd) { return 1.96 * std::sqrt(v / (m + nd)); });
+      }};
+  static const Mistake decision_count_under_root{
+      "the decision count under the root? (the half-width is the estimate's: √estimate_count)",
+      [](const IlluminanceStats& d, long n, float t) {
+        return half_width_rule(d, n, t, [](double v, double, double nd) { return 1.96 * std::sqrt(v / nd); });
+      }};
+  static const Mistake over_n{"σ divided by n_E, not by √n_E?",
+                              [](const IlluminanceStats& d, long n, float t) {
+                                return half_width_rule(d, n, t, [](double v, double m, double) {
+                                  return 1.96 * std::sqrt(v) / m;
+                                });
+                              }};
+  static const Mistake no_196{"the factor 1.96 of a 95% interval left out?",
+                              [](const IlluminanceStats& d, long n, float t) {
+                                return half_width_rule(d, n, t, [](double v, double m, double) {
+                                  return std::sqrt(v / m);
+                                });
+                              }};
+  // Under the course's rule the two counts are the same number, so either under the root is right.
+  static const std::vector<Mistake> all =
+      kAssignmentStoppingRule == StoppingRule::course
+          ? std::vector<Mistake>{variance_as_std, decision_in_count, over_n, no_196}
+          : std::vector<Mistake>{variance_as_std, decision_in_count, decision_count_under_root,
+                                 over_n, no_196};
   return all;
 }
 
-TEST(convergence, rule_on_hand_computed_cases) {
+/// The cases the split rule hands over: decision samples apart from the estimate's.
+std::vector<Case> split_rule_cases() {
   const IlluminanceStats s = stats_of({1.0, 3.0});      // μ = 2, σ² = 2
   const IlluminanceStats w = stats_of({2.0, 4.0, 6.0});  // μ = 4, σ² = 4
-  const std::vector<Case> cases = {
+  return {
       {s, 2, 0.98f + 1e-6f, true, "μ 2, σ² 2, 2 estimate samples: I = 1.96·√(2/2) = 1.96 ≤ 0.98·2"},
       {s, 2, 0.97f, false, "μ 2, σ² 2, 2 estimate samples: I = 1.96 > 0.97·2"},
       {s, 8, 0.49f + 1e-6f, true, "μ 2, σ² 2, 8 estimate samples: I = 1.96·√(2/8) = 0.98 ≤ 0.49·2"},
@@ -82,9 +99,39 @@ TEST(convergence, rule_on_hand_computed_cases) {
       {w, 16, 0.24f, false, "μ 4, σ² 4, 16 estimate samples: I = 0.98 > 0.24·4"},
       {w, 3, 0.566f, true, "μ 4, σ² 4, 3 estimate samples: I = 1.96·2/√3 = 2.263 ≤ 0.566·4"},
       {w, 3, 0.5f, false, "μ 4, σ² 4, 3 estimate samples: I = 2.263 > 0.5·4"},
+      {stats_of({0.0, 0.0, 0.0}), 9, 0.05f, true, "a black pixel, σ = 0: I = 0 ≤ 0.05·0, converged"},
+      {stats_of({0.25, 0.25}), 6, 0.01f, true, "σ = 0: I = 0 ≤ 0.01·0.25, converged"},
       {s, 0, 1000.0f, false, "no estimate sample: nothing to report, not converged"},
       {stats_of({5.0}), 10, 1.0f, false, "one decision sample says nothing about σ: not converged"},
   };
+}
+
+/// The cases the course's rule hands over: every sample both decides and counts, so
+/// estimate_count is the decision statistics' own count.
+std::vector<Case> course_rule_cases() {
+  const IlluminanceStats s = stats_of({1.0, 3.0});                  // μ 2, σ² 2
+  const IlluminanceStats w = stats_of({2.0, 4.0, 6.0});             // μ 4, σ² 4
+  const IlluminanceStats e = stats_of({1, 1, 1, 1, 3, 3, 3, 3});    // μ 2, σ² 8/7
+  return {
+      {s, 2, 0.98f + 1e-6f, true, "μ 2, σ² 2, 2 samples: I = 1.96·√(2/2) = 1.96 ≤ 0.98·2"},
+      {s, 2, 0.97f, false, "μ 2, σ² 2, 2 samples: I = 1.96 > 0.97·2"},
+      {s, 2, 0.6f, false, "μ 2, σ² 2, 2 samples: I = 1.96 > 0.6·2"},
+      {w, 3, 0.566f, true, "μ 4, σ² 4, 3 samples: I = 1.96·2/√3 = 2.263 ≤ 0.566·4"},
+      {w, 3, 0.5f, false, "μ 4, σ² 4, 3 samples: I = 2.263 > 0.5·4"},
+      {e, 8, 0.3705f, true, "μ 2, σ² 8/7, 8 samples: I = 1.96·√(1/7) = 0.7408 ≤ 0.3705·2"},
+      {e, 8, 0.37f, false, "μ 2, σ² 8/7, 8 samples: I = 0.7408 > 0.37·2"},
+      {e, 8, 0.25f, false, "μ 2, σ² 8/7, 8 samples: I = 0.7408 > 0.25·2"},
+      {stats_of({0.0, 0.0, 0.0}), 3, 0.05f, true, "a black pixel, σ = 0: I = 0 ≤ 0.05·0, converged"},
+      {stats_of({0.25, 0.25}), 2, 0.01f, true, "σ = 0: I = 0 ≤ 0.01·0.25, converged"},
+      {IlluminanceStats(), 0, 1000.0f, false, "no sample: nothing to report, not converged"},
+      {stats_of({5.0}), 1, 1.0f, false, "one sample says nothing about σ: not converged"},
+  };
+}
+
+TEST(convergence, rule_on_hand_computed_cases) {
+  const std::vector<Case> cases = kAssignmentStoppingRule == StoppingRule::course
+                                      ? course_rule_cases()
+                                      : split_rule_cases();
   std::vector<bool> got;
   std::ostringstream wrong;
   for (const Case& c : cases) {
