@@ -59,6 +59,12 @@ constexpr bool kCourseRule = kAssignmentStoppingRule == StoppingRule::course;
 /// computed independently: split, all but every fourth (indices 3, 7, ...); course, all.
 long counted_of(long n) { return kCourseRule ? n : n - n / 4; }
 
+/// What a wrong count in the pixel's value means, under the assignment's rule.
+constexpr const char* kCountHint =
+    kCourseRule ? ": under the course's rule every sample goes into *estimate (sample_counts)"
+                : ": under the split rule every sample but each fourth (indices 3, 7, ...) goes "
+                  "into *estimate (sample_counts), the fourth only into the decision statistics";
+
 /// The first n samples of a stream as the assignment's rule uses them, computed independently:
 /// split, every fourth sample (indices 3, 7, ...) decides and the others are the estimate;
 /// course, every sample is both.
@@ -127,7 +133,7 @@ TEST(adaptive_loop, stops_at_the_first_batch_where_the_rule_holds) {
                   "sample in it too makes its count, n_E, wrong), and the decision statistics the "
                   "decision samples only?");
     Split split = split_stream(s.values, expected);
-    ASSERT_EQ(size_t(stats.count), split.estimate.size()) << "seed " << seed;
+    ASSERT_EQ(size_t(stats.count), split.estimate.size()) << "seed " << seed << kCountHint;
     ASSERT_EQ(size_t(stats.decision_samples), size_t(taken) - split.estimate.size()) << "seed " << seed;
     ASSERT_EQ(stats.samples_taken(), taken);
     ASSERT_NEAR(stats.mean.x, double(mean_of(split.estimate)), 1e-9)
@@ -154,7 +160,7 @@ TEST(adaptive_loop, never_more_than_the_maximum) {
   PixelStats stats;
   int taken = estimate_pixel_adaptive(AdaptiveSettings{50, 8, 0.001f}, s.fn(), &stats, test_rule);
   EXPECT_EQ(taken, 50);
-  EXPECT_EQ(stats.count, counted_of(50));
+  EXPECT_EQ(stats.count, counted_of(50)) << kCountHint;
   EXPECT_EQ(stats.samples_taken(), 50);
 }
 
@@ -165,7 +171,7 @@ TEST(adaptive_loop, constant_pixel_stops_after_one_batch) {
     PixelStats stats;
     int taken = estimate_pixel_adaptive(AdaptiveSettings{512, 16, 0.05f}, s.fn(), &stats, test_rule);
     EXPECT_EQ(taken, 16) << "value " << v;
-    EXPECT_EQ(stats.count, counted_of(16)) << "value " << v;
+    EXPECT_EQ(stats.count, counted_of(16)) << "value " << v << kCountHint;
     EXPECT_DOUBLE_EQ(stats.mean.x, v);
   }
 }
@@ -203,7 +209,7 @@ TEST(adaptive_loop, constant_scene_stops_every_pixel_after_the_first_batch) {
   for (int y = 0; y < film.height(); ++y)
     for (int x = 0; x < film.width(); ++x) {
       ASSERT_EQ(taken[size_t(y) * 24 + size_t(x)], 32) << x << "," << y;
-      ASSERT_EQ(film.at(x, y).count, counted_of(32)) << x << "," << y;
+      ASSERT_EQ(film.at(x, y).count, counted_of(32)) << x << "," << y << kCountHint;
       ASSERT_EQ(film.at(x, y).mean, glm::dvec3(glm::vec3(0.3f, 0.6f, 0.9f)));
     }
   EXPECT_EQ(report.samples, 24L * 18 * 32);
@@ -229,7 +235,7 @@ TEST(adaptive_loop, sample_rate_image_shows_the_samples_taken) {
     for (int x = 0; x < film.width(); ++x) {
       size_t i = size_t(y) * 16 + size_t(x);
       EXPECT_EQ(rate.at(x, y), sample_rate_colour(float(taken[i]) / 512.0f)) << x << "," << y;
-      EXPECT_EQ(estimate.count[i], float(counted_of(taken[i]))) << x << "," << y;
+      EXPECT_EQ(estimate.count[i], float(counted_of(taken[i]))) << x << "," << y << kCountHint;
       total += taken[i];
       least = std::min(least, taken[i]);
       most = std::max(most, taken[i]);
