@@ -125,6 +125,7 @@ struct Slot {
   uint32_t count;  ///< leaf: entries; 0 for a subtree still to collapse
   Bounds3 box;
   float area;
+  uint32_t small = 0;  ///< a subtree of at most WideBvh::kPackedLeafEntries: its entries
   /// The way down from the wide node's own binary node: at step d the split axis[d], and bit d of
   /// `right` set where it went into the second child. A merged run keeps the common part.
   static constexpr int kMaxPath = 16;
@@ -191,13 +192,58 @@ uint32_t entries_up_to(const std::vector<BvhNode>& bin, uint32_t index, uint32_t
   return std::min(left + entries_up_to(bin, n.offset, limit - left, &unused), limit + 1);
 }
 
+/// A wide node's visit, in the units of leaf_cost: its eight-box test and its four cache lines,
+/// about two packet tests (on CBbunny, 1 or 2 here give trees within a percent of each other in
+/// a render's instruction count; 1 makes half again as many nodes).
+constexpr float kNodeVisitCost = 2.0f;
+
+/// What a ray that enters a leaf of n entries costs, in SIMD packet tests: the visit itself and a
+/// test per four entries. Only ratios of these are used.
+float leaf_cost(uint32_t n) {
+  return 1.0f + float((n + Triangle4::kLanes - 1) / Triangle4::kLanes);
+}
+
+/// Whether entries in boxes a (na of them) and b (nb) are cheaper as one leaf than apart, by the
+/// surface area heuristic (a ray enters a box about in proportion to its area), where keeping
+/// them apart costs `apart_extra` per unit of their union's area besides their own leaves (a
+/// wide node of their own, when they cannot be two slots of the node being made). Neighbouring
+/// triangles of a mesh, whose union box is hardly larger than each, are packed (their packets'
+/// lanes are full, and one leaf is one cache miss); a Cornell box's walls, whose union is the
+/// whole room, are not, so a shadow ray tests the one or two walls it comes near instead of all.
+bool packing_pays(const Bounds3& a, uint32_t na, const Bounds3& b, uint32_t nb,
+                  float apart_extra = 0.0f) {
+  Bounds3 both = a;
+  both.grow(b);
+  const float area = both.surface_area();
+  return area * leaf_cost(na + nb) <=
+         area * apart_extra + a.surface_area() * leaf_cost(na) + b.surface_area() * leaf_cost(nb);
+}
+
+/// Whether the small subtree of slot `s` (s.small entries, a binary interior node) pays as one
+/// leaf, if it is a slot of its own (apart_extra 0) or would otherwise become a wide node of its
+/// own (apart_extra: kNodeVisitCost).
+bool pack_subtree(const std::vector<BvhNode>& bin, const Slot& s, float apart_extra) {
+  const BvhNode& node = bin[s.node];
+  uint32_t unused;
+  const uint32_t left = entries_up_to(bin, s.node + 1, s.small, &unused);
+  return packing_pays(bin[s.node + 1].bounds, left, bin[node.offset].bounds, s.small - left,
+                      apart_extra);
+}
+
 /// The slot for binary node `index`: a leaf when it is a binary leaf or its whole subtree fits
-/// WideBvh::kPackedLeafEntries (the binary tree's small leaves are packed four triangles to a
-/// packet, so the SIMD test's lanes are full), else a subtree to open or collapse.
+/// WideBvh::kPackedLeafEntries and packing its two halves pays (the binary tree's small leaves
+/// are packed four triangles to a packet, so the SIMD test's lanes are full), else a subtree to
+/// open or collapse.
 Slot make_slot(const std::vector<BvhNode>& bin, uint32_t index) {
-  Slot s{index, 0, 0, bin[index].bounds, bin[index].bounds.surface_area()};
+  const BvhNode& node = bin[index];
+  Slot s{index, 0, 0, node.bounds, node.bounds.surface_area()};
   const uint32_t n = entries_up_to(bin, index, WideBvh::kPackedLeafEntries, &s.first);
-  if (bin[index].is_leaf() || n <= WideBvh::kPackedLeafEntries) s.count = n;
+  if (node.is_leaf()) {
+    s.count = n;
+  } else if (n <= WideBvh::kPackedLeafEntries) {
+    s.small = n;
+    if (pack_subtree(bin, s, 0.0f)) s.count = n;
+  }
   return s;
 }
 
@@ -237,7 +283,9 @@ uint32_t WideBvh::collapse(const std::vector<BvhNode>& bin, uint32_t index, uint
     for (int k = 0; k + 1 < n; ++k) {
       Slot& a = slots[k];
       const Slot& b = slots[k + 1];
-      if (a.count == 0 || b.count == 0 || a.count + b.count > WideBvh::kPackedLeafEntries) continue;
+      if (a.count == 0 || b.count == 0 || a.count + b.count > WideBvh::kPackedLeafEntries ||
+          !packing_pays(a.box, a.count, b.box, b.count))
+        continue;
       a.count += b.count;
       a.box.grow(b.box);
       a.area = a.box.surface_area();
@@ -252,6 +300,10 @@ uint32_t WideBvh::collapse(const std::vector<BvhNode>& bin, uint32_t index, uint
     for (int k = 0; k < n; ++k) can_open |= slots[k].count == 0;
     if (!can_open) break;
   }
+  // A small subtree left closed would become a wide node of its own: a leaf may pay now.
+  for (int k = 0; k < n; ++k)
+    if (slots[k].count == 0 && slots[k].small > 0 && pack_subtree(bin, slots[k], kNodeVisitCost))
+      slots[k].count = slots[k].small;
   const uint32_t self = uint32_t(nodes_.size());
   {
     WideNode& node = nodes_.emplace_back();
