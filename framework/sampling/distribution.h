@@ -37,13 +37,26 @@ class Distribution1D {
  private:
   int find_cell(float u) const {
     // Last i with cdf_[i] <= u, and never a cell of zero probability.
-    int i = int(std::upper_bound(cdf_.begin(), cdf_.end(), u) - cdf_.begin()) - 1;
+    int i;
+    if (size() <= kCountedCells) {
+      // upper_bound's very answer (the number of entries u is not below: the CDF is sorted),
+      // counted without a branch on u. A light of a few triangles picks its cell here for every
+      // sample, and a binary search's branch on a uniform u is mispredicted every other time.
+      const float* cdf = cdf_.data();
+      int not_below = 0;
+      for (int k = 0; k <= size(); ++k) not_below += !(u < cdf[k]);
+      i = not_below - 1;
+    } else {
+      i = int(std::upper_bound(cdf_.begin(), cdf_.end(), u) - cdf_.begin()) - 1;
+    }
     i = std::clamp(i, 0, size() - 1);
     if (!has_empty_cell_) return i;  // the walks below would not move
     while (i > 0 && cdf_[i + 1] <= cdf_[i]) --i;
     while (i < size() - 1 && cdf_[i + 1] <= cdf_[i]) ++i;
     return i;
   }
+  /// Distributions of at most this many cells find a cell by counting (see find_cell).
+  static constexpr int kCountedCells = 16;
   std::vector<float> func_;
   std::vector<float> cdf_;  ///< n+1 entries, cdf_[0] = 0, cdf_[n] = 1
   float integral_ = 0.0f;
