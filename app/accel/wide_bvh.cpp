@@ -249,6 +249,61 @@ Slot make_slot(const std::vector<BvhNode>& bin, uint32_t index) {
 
 }  // namespace
 
+int WideBvh::regroup_leaf(uint32_t first, uint32_t count, int max_groups, uint32_t* sizes) {
+  // Start from one group an entry and join the pair that pays most, while a pair pays.
+  struct Group {
+    Bounds3 box;
+    uint32_t count;
+    uint32_t lowest;  ///< its first entry's place in the leaf, to keep the leaf's order
+  };
+  Group groups[kPackedLeafEntries];
+  uint32_t member[kPackedLeafEntries];  ///< each entry's group
+  int n = int(count);
+  for (uint32_t e = 0; e < count; ++e) {
+    groups[e] = {scene_.primitive_bounds(order_[first + e]), 1, e};
+    member[e] = e;
+  }
+  for (;;) {
+    int best_i = -1, best_j = -1;
+    float best_gain = 0.0f;
+    for (int i = 0; i < n; ++i)
+      for (int j = i + 1; j < n; ++j) {
+        const Group &a = groups[i], &b = groups[j];
+        if (!packing_pays(a.box, a.count, b.box, b.count)) continue;
+        Bounds3 both = a.box;
+        both.grow(b.box);
+        const float gain = a.box.surface_area() * leaf_cost(a.count) +
+                           b.box.surface_area() * leaf_cost(b.count) -
+                           both.surface_area() * leaf_cost(a.count + b.count);
+        if (best_i < 0 || gain > best_gain) best_i = i, best_j = j, best_gain = gain;
+      }
+    if (best_i < 0) break;
+    groups[best_i].box.grow(groups[best_j].box);
+    groups[best_i].count += groups[best_j].count;
+    groups[best_i].lowest = std::min(groups[best_i].lowest, groups[best_j].lowest);
+    for (uint32_t e = 0; e < count; ++e) {
+      if (member[e] == uint32_t(best_j)) member[e] = uint32_t(best_i);
+      if (member[e] == uint32_t(n - 1)) member[e] = uint32_t(best_j);
+    }
+    groups[best_j] = groups[n - 1];
+    --n;
+  }
+  if (n < 2 || n > max_groups) return 1;
+  // The groups in the order of their first entries, each group's entries in the leaf's order.
+  int rank[kPackedLeafEntries];
+  for (int g = 0; g < n; ++g) rank[g] = g;
+  std::sort(rank, rank + n, [&](int a, int b) { return groups[a].lowest < groups[b].lowest; });
+  uint32_t reordered[kPackedLeafEntries];
+  uint32_t out = 0;
+  for (int r = 0; r < n; ++r) {
+    for (uint32_t e = 0; e < count; ++e)
+      if (member[e] == uint32_t(rank[r])) reordered[out++] = order_[first + e];
+    sizes[r] = groups[rank[r]].count;
+  }
+  std::copy(reordered, reordered + count, order_.begin() + first);
+  return n;
+}
+
 uint32_t WideBvh::collapse(const std::vector<BvhNode>& bin, uint32_t index, uint32_t depth) {
   if (depth > uint32_t(Bvh::kMaxDepth))
     throw std::invalid_argument("WideBvh: the binary tree is deeper than Bvh::kMaxDepth (" +
@@ -257,6 +312,7 @@ uint32_t WideBvh::collapse(const std::vector<BvhNode>& bin, uint32_t index, uint
   // A leaf at the root still gets a node above it, so every traversal starts the same way.
   constexpr int kWidth = WideNode::kWidth;
   Slot slots[kWidth];
+  uint32_t group_sizes[WideBvh::kPackedLeafEntries];
   int n = 0;
   slots[n++] = make_slot(bin, index);
   // Slots stay in the binary tree's order throughout, so neighbouring leaves hold neighbouring
@@ -304,6 +360,33 @@ uint32_t WideBvh::collapse(const std::vector<BvhNode>& bin, uint32_t index, uint
   for (int k = 0; k < n; ++k)
     if (slots[k].count == 0 && slots[k].small > 0 && pack_subtree(bin, slots[k], kNodeVisitCost))
       slots[k].count = slots[k].small;
+  // Slots still free (a scene of a few primitives): a leaf of the student's tree may hold entries
+  // far apart (CBspheres_lambertian's floor and both spheres, in one box from the floor to the
+  // spheres' tops, which every shadow ray from the floor starts in), so its entries are grouped
+  // again as the area heuristic would pack them (a quad's two triangles stay together, the
+  // spheres go apart), and the groups take a slot each where there is room.
+  for (int k = 0; k < n; ++k) {
+    const Slot leaf = slots[k];
+    if (leaf.count < 2 || leaf.count > WideBvh::kPackedLeafEntries || n == kWidth) continue;
+    const int groups = regroup_leaf(leaf.first, leaf.count, kWidth - n + 1, group_sizes);
+    if (groups < 2) continue;
+    const int extra = groups - 1;
+    for (int j = n - 1; j > k; --j) slots[j + extra] = slots[j];
+    uint32_t first = leaf.first;
+    for (int g = 0; g < groups; ++g) {
+      Slot& part = slots[k + g];
+      part = leaf;
+      part.first = first;
+      part.count = group_sizes[g];
+      part.box = Bounds3{};
+      for (uint32_t e = first; e < first + part.count; ++e)
+        part.box.grow(scene_.primitive_bounds(order_[e]));
+      part.area = part.box.surface_area();
+      first += part.count;
+    }
+    n += extra;
+    k += extra;
+  }
   const uint32_t self = uint32_t(nodes_.size());
   {
     WideNode& node = nodes_.emplace_back();

@@ -121,6 +121,11 @@ class WideBvh final : public RayQuery {
   struct Nearest;
 
   uint32_t collapse(const std::vector<BvhNode>& binary, uint32_t index, uint32_t depth);
+  /// Groups the leaf-order entries [first, first + count) (at most kPackedLeafEntries) as the
+  /// surface area heuristic packs them; if that makes 2 to max_groups groups, reorders the
+  /// entries so each group is a run, writes the runs' sizes to sizes[] and returns how many;
+  /// else changes nothing and returns 1.
+  int regroup_leaf(uint32_t first, uint32_t count, int max_groups, uint32_t* sizes);
   /// Appends the packets of the leaf-order entries [first, first + count).
   void add_packets(uint32_t first, uint32_t count);
   Corners corners(uint32_t packet, uint32_t lane) const {
