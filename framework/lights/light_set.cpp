@@ -11,6 +11,7 @@
 
 #include "framework/math/float_error.h"
 #include "framework/math/frame.h"
+#include "framework/math/vec3_lanes.h"
 #include "framework/sampling/warp.h"
 
 namespace pt {
@@ -172,6 +173,23 @@ bool sample_triangles(const SampledLight& l, const glm::vec3& p, glm::vec2 u, bo
   const glm::vec3 n = t.n;
   if (n == glm::vec3(0.0f)) return false;
   const glm::vec3 bary = square_to_uniform_triangle({u0, u.y});
+#if PT_VEC3_LANES
+  // glm's operations below, three lanes at a time (framework/math/vec3_lanes.h): the same bits.
+  using namespace lanes;
+  const V3 wa = mul(splat(bary.x), load(t.a)), wb = mul(splat(bary.y), load(t.b)),
+           wc = mul(splat(bary.z), load(t.c));
+  const V3 q = add(add(wa, wb), wc);
+  const V3 d = sub(q, load(p));
+  const float dist = std::sqrt(lanes::dot(d, d));
+  if (!(dist > 0.0f) || !std::isfinite(dist)) return false;
+  const V3 wi = div(d, splat(dist));
+  ls->wi = to_vec3(wi);
+  ls->distance = dist;
+  ls->p = to_vec3(q);
+  ls->p_error = to_vec3(mul(splat(gamma(6)), add(add(glm_abs(wa), glm_abs(wb)), glm_abs(wc))));
+  ls->n = n;
+  const float cos_l = lanes::dot(neg(wi), load(n));
+#else
   const glm::vec3 wa = bary.x * t.a, wb = bary.y * t.b, wc = bary.z * t.c;
   const glm::vec3 q = wa + wb + wc;
   const glm::vec3 d = q - p;
@@ -183,6 +201,7 @@ bool sample_triangles(const SampledLight& l, const glm::vec3& p, glm::vec2 u, bo
   ls->p_error = gamma(6) * (glm::abs(wa) + glm::abs(wb) + glm::abs(wc));
   ls->n = n;
   const float cos_l = glm::dot(-ls->wi, n);
+#endif
   if (one_sided && !(cos_l > 0.0f)) return false;  // the back of a panel
   // Picking the triangle with probability area/total and a point uniformly on it: 1/total.
   ls->pdf = area_to_solid_angle_pdf(l.inv_area, dist, cos_l);
