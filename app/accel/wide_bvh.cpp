@@ -624,7 +624,7 @@ void WideBvh::find_nearest(const Ray& ray, Nearest* best) const {
 }
 
 bool WideBvh::intersect(const Ray& ray, SurfaceHit* hit) const {
-  if (nodes_.empty() || !is_traceable(ray)) return false;
+  if (nodes_.empty() || !traceable(ray)) return false;
   Nearest best;
   find_nearest<false, true>(ray, &best);
   if (!best.found()) return false;
@@ -645,7 +645,7 @@ bool WideBvh::intersect(const Ray& ray, SurfaceHit* hit) const {
 }
 
 bool WideBvh::nearest(const Ray& ray, NearestHit* hit) const {
-  if (nodes_.empty() || !is_traceable(ray)) return false;
+  if (nodes_.empty() || !traceable(ray)) return false;
   Nearest best;
   find_nearest<false, false>(ray, &best);
   if (!best.found()) return false;
@@ -654,7 +654,7 @@ bool WideBvh::nearest(const Ray& ray, NearestHit* hit) const {
 }
 
 bool WideBvh::occluded(const Ray& ray) const {
-  if (nodes_.empty() || !is_traceable(ray)) return false;
+  if (nodes_.empty() || !traceable(ray)) return false;
   const ShearedRay4 sheared4(ray);
   const ShearedRay& sheared = sheared4.r;
   const Box4Ray box_ray(ray);
