@@ -333,6 +333,17 @@ glm::vec3 LightSet::environment_radiance(const glm::vec3& dir) const {
 
 LightSample LightSet::sample(int index, const SurfaceHit& hit, glm::vec2 u) const {
   const SampledLight& l = lights_[index];
+  // Panels and meshes (every light of the course's scenes) first, filling the returned sample in
+  // place: the switch below returns either its sample or an empty one, so its result is copied.
+  if (l.kind != SampledLightKind::panel && l.kind != SampledLightKind::mesh)
+    return sample_other(l, hit, u);
+  LightSample ls;
+  if (!sample_triangles(l, hit.p, u, l.kind == SampledLightKind::panel, &ls)) ls = LightSample{};
+  return ls;
+}
+
+LightSample LightSet::sample_other(const SampledLight& l, const SurfaceHit& hit,
+                                   glm::vec2 u) const {
   LightSample ls;
   const glm::vec3 p = hit.p;
   auto finish_at = [&](const glm::vec3& q, const glm::vec3& q_error, const glm::vec3& n) {
@@ -382,11 +393,8 @@ LightSample LightSet::sample(int index, const SurfaceHit& hit, glm::vec2 u) cons
       return ls;
     }
     case SampledLightKind::panel:
-      if (!sample_triangles(l, p, u, true, &ls)) return {};
-      return ls;
     case SampledLightKind::mesh:
-      if (!sample_triangles(l, p, u, false, &ls)) return {};
-      return ls;
+      return {};  // sample() samples these
     case SampledLightKind::sphere: {
       const Sphere& s = scene_.spheres[l.sphere];
       glm::vec3 dc = s.center - p;

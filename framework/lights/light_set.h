@@ -142,6 +142,9 @@ class LightSet {
   bool unoccluded(const RayQuery& query, const Ray& ray, int index) const;
 
  private:
+  /// sample() for every kind but panels and meshes.
+  LightSample sample_other(const SampledLight& l, const SurfaceHit& hit, glm::vec2 u) const;
+
   const Scene& scene_;
   const EnvironmentMap* environment_ = nullptr;
   std::vector<SampledLight> lights_;
