@@ -8,6 +8,9 @@
 #include "framework/lights/light_set.h"
 #include "framework/render/normal_shading.h"
 #include "pipeline/4-global/integrator.h"
+#ifdef PT_HAVE_WIDE_BVH
+#include "app/accel/wide_bvh.h"
+#endif
 
 namespace pt {
 
@@ -16,28 +19,43 @@ std::vector<MaterialKind> rendered_material_kinds(const RenderSettings& settings
   return {MaterialKind::diffuse, MaterialKind::mirror, MaterialKind::glass, MaterialKind::emission};
 }
 
-// Every ray counts: the query is wrapped in a counter that the integrator traces through, and each
-// camera sample adds what its path traced on this thread to the tile's context.
-TracedRadianceFn make_radiance(const RenderSettings& settings, const Scene& scene,
-                               const RayQuery& query) {
-  auto counting = std::make_shared<CountingRayQuery>(query);
+namespace {
+
+// Every ray counts: each camera sample traces through a counter of its own, made on the stack
+// around the render's query, and adds its count to the tile's context. Made for the query's own
+// type where that is known (the wide tree, a final class), so a ray costs one virtual call into
+// the counter, an increment and a direct call, and no thread-local lookup.
+template <class Query>
+TracedRadianceFn counted_radiance(const RenderSettings& settings, const Scene& scene,
+                                  const Query& query) {
   if (settings.shading == ShadingMode::normals) {
-    return [counting](const Ray& ray, Rng&, TraceContext& context) {
-      const uint64_t before = counting->thread_count();
-      const glm::vec3 L = normal_shading(*counting, ray);
-      context.rays.add(counting->thread_count() - before);
+    return [&query](const Ray& ray, Rng&, TraceContext& context) {
+      const LocalCountingRayQuery<Query> counting(query);
+      const glm::vec3 L = normal_shading(counting, ray);
+      context.rays.add(counting.count());
       return L;
     };
   }
   std::string error;
-  std::shared_ptr<Integrator> integrator = Integrator::create(settings, scene, *counting, &error);
+  std::shared_ptr<Integrator> integrator = Integrator::create(settings, scene, query, &error);
   if (!integrator) throw std::runtime_error(error);
-  return [integrator, counting](const Ray& ray, Rng& rng, TraceContext& context) {
-    const uint64_t before = counting->thread_count();
-    const glm::vec3 L = integrator->radiance(ray, rng);
-    context.rays.add(counting->thread_count() - before);
+  return [integrator, &query](const Ray& ray, Rng& rng, TraceContext& context) {
+    const LocalCountingRayQuery<Query> counting(query);
+    const glm::vec3 L = integrator->radiance(ray, rng, counting);
+    context.rays.add(counting.count());
     return L;
   };
+}
+
+}  // namespace
+
+TracedRadianceFn make_radiance(const RenderSettings& settings, const Scene& scene,
+                               const RayQuery& query) {
+#ifdef PT_HAVE_WIDE_BVH
+  if (const auto* wide = dynamic_cast<const WideBvh*>(&query))
+    return counted_radiance(settings, scene, *wide);
+#endif
+  return counted_radiance(settings, scene, query);
 }
 
 std::string no_light_warning(const RenderSettings& settings, const Scene& scene) {

@@ -18,8 +18,8 @@ std::vector<MaterialKind> rendered_material_kinds(const RenderSettings& settings
 
 /// What a camera ray brings back: the normals view (--normals, or a scene with nothing that
 /// emits), or the light Parts 3 and 4 estimate (pipeline/4-global's Integrator). The integrator
-/// lives as long as the function. Every ray traced for a sample (camera, shadow, bounce) is added
-/// to the tile's context. Throws std::runtime_error naming the file when the environment map
+/// lives as long as the function; `scene` and `query` must outlive it. Every ray traced for a
+/// sample (camera, shadow, bounce) is added to the tile's context. Throws std::runtime_error naming the file when the environment map
 /// cannot be read.
 TracedRadianceFn make_radiance(const RenderSettings& settings, const Scene& scene,
                                const RayQuery& query);

@@ -51,5 +51,27 @@ TEST(RenderJob, ShadowAndBounceRaysAreCounted) {
   EXPECT_EQ(c.reported, c.traced);
 }
 
+// A render straight on the wide tree counts its rays without the counter above (on the tree's own
+// type); the same render, same seed, through that counter traces the same rays.
+TEST(RenderJob, ARenderOnTheQueryItselfReportsTheRaysItTraced) {
+  const Scene scene = load_collada(std::string(pt::test::source_dir()) + "/scenes/cornell_spheres.dae");
+  for (int width : {2, 8}) {
+    RenderSettings s;
+    s.width = 24;
+    s.height = 18;
+    s.threads = 2;
+    s.samples_per_pixel = 2;
+    s.light_samples = 2;
+    s.max_depth = 3;
+    s.bvh_width = width;
+    const std::unique_ptr<RayQuery> query = make_ray_query(s, scene);
+    Film direct_film(s.width, s.height);
+    const RenderReport direct = render_scene(s, scene, *query, &direct_film);
+    const Counted counted = render_cornell(s);
+    EXPECT_GT(direct.rays, uint64_t(2 * 24 * 18 * 2)) << "bvh width " << width;
+    EXPECT_EQ(direct.rays, counted.traced) << "bvh width " << width;
+  }
+}
+
 }  // namespace
 }  // namespace pt

@@ -39,6 +39,40 @@ Bounds3 random_box(Rng& rng, const glm::vec3& o) {
   return b;
 }
 
+// The wide tree's entry check answers as is_traceable on rays made of every kind of float in every
+// field: zeros of both signs, denormals, infinities, NaNs, the largest floats and random bits.
+TEST(AccelBox4, TraceableIsIsTraceable) {
+  const float inf = std::numeric_limits<float>::infinity();
+  const float kinds[] = {0.0f, -0.0f, 1.0f, -2.5f, std::numeric_limits<float>::denorm_min(),
+                         -std::numeric_limits<float>::max(), inf, -inf,
+                         std::numeric_limits<float>::quiet_NaN(), bits_to_float(0xFF800001u)};
+  constexpr int kKinds = int(sizeof(kinds) / sizeof(kinds[0]));
+  Rng rng(9, 5);
+  long traceable_rays = 0, rays = 0;
+  for (int i = 0; i < 400000; ++i) {
+    float f[8];
+    for (float& x : f) {
+      const uint32_t pick = rng.next_u32() % 16;
+      // Mostly ordinary numbers, so that a ray is traceable about half the time.
+      x = pick < kKinds && rng.next_u32() % 4 == 0 ? kinds[pick]
+          : pick == 15                            ? bits_to_float(rng.next_u32())
+                                                  : rng.next_float() * 4.0f - 2.0f;
+    }
+    if (i % 3 == 0) f[3] = f[4] = f[5] = (i % 2 ? 0.0f : -0.0f);  // a zero direction
+    if (i % 5 == 0) f[3 + i % 3] = 0.0f;                          // one zero component
+    Ray r;
+    r.o = glm::vec3(f[0], f[1], f[2]);
+    r.d = glm::vec3(f[3], f[4], f[5]);
+    r.tmin = f[6];
+    r.tmax = i % 7 == 0 ? inf : f[7];
+    ASSERT_EQ(traceable(r), is_traceable(r)) << "ray " << i;
+    traceable_rays += is_traceable(r);
+    ++rays;
+  }
+  EXPECT_GT(traceable_rays, rays / 10);
+  EXPECT_LT(traceable_rays, rays - rays / 10);
+}
+
 TEST(AccelBox4, EachLaneAnswersAsPart2) {
   Rng rng(77);
   size_t lanes = 0, hits = 0, differ = 0, more_conservative = 0;

@@ -7,6 +7,10 @@
 #include <algorithm>
 #include <cmath>
 
+#if defined(__SSE2__) || defined(_M_X64)
+#include <xmmintrin.h>
+#endif
+
 #include <glm/common.hpp>
 #include <glm/vec3.hpp>
 
@@ -35,7 +39,15 @@ struct ShearedRay {
     degenerate = ray.d[kz] == 0.0f;
     kx = (kz + 1) % 3, ky = (kx + 1) % 3;
     const glm::vec3 d(ray.d[kx], ray.d[ky], ray.d[kz]);
+#if defined(__SSE2__) || defined(_M_X64)
+    // The three quotients in one division of four lanes: each lane is the correctly rounded
+    // quotient, as the scalar division's, and a shadow ray waited on three divisions in a row.
+    alignas(16) float q[4];
+    _mm_store_ps(q, _mm_div_ps(_mm_setr_ps(-d.x, -d.y, 1.0f, 1.0f), _mm_set1_ps(d.z)));
+    sx = q[0], sy = q[1], sz = q[2];
+#else
     sx = -d.x / d.z, sy = -d.y / d.z, sz = 1.0f / d.z;
+#endif
   }
 };
 

@@ -125,6 +125,7 @@ struct Slot {
   uint32_t count;  ///< leaf: entries; 0 for a subtree still to collapse
   Bounds3 box;
   float area;
+  uint32_t small = 0;  ///< a subtree of at most WideBvh::kPackedLeafEntries: its entries
   /// The way down from the wide node's own binary node: at step d the split axis[d], and bit d of
   /// `right` set where it went into the second child. A merged run keeps the common part.
   static constexpr int kMaxPath = 16;
@@ -191,17 +192,117 @@ uint32_t entries_up_to(const std::vector<BvhNode>& bin, uint32_t index, uint32_t
   return std::min(left + entries_up_to(bin, n.offset, limit - left, &unused), limit + 1);
 }
 
+/// A wide node's visit, in the units of leaf_cost: its eight-box test and its four cache lines,
+/// about two packet tests (on CBbunny, 1 or 2 here give trees within a percent of each other in
+/// a render's instruction count; 1 makes half again as many nodes).
+constexpr float kNodeVisitCost = 2.0f;
+
+/// What a ray that enters a leaf of n entries costs, in SIMD packet tests: the visit itself and a
+/// test per four entries. Only ratios of these are used.
+float leaf_cost(uint32_t n) {
+  return 1.0f + float((n + Triangle4::kLanes - 1) / Triangle4::kLanes);
+}
+
+/// Whether entries in boxes a (na of them) and b (nb) are cheaper as one leaf than apart, by the
+/// surface area heuristic (a ray enters a box about in proportion to its area), where keeping
+/// them apart costs `apart_extra` per unit of their union's area besides their own leaves (a
+/// wide node of their own, when they cannot be two slots of the node being made). Neighbouring
+/// triangles of a mesh, whose union box is hardly larger than each, are packed (their packets'
+/// lanes are full, and one leaf is one cache miss); a Cornell box's walls, whose union is the
+/// whole room, are not, so a shadow ray tests the one or two walls it comes near instead of all.
+bool packing_pays(const Bounds3& a, uint32_t na, const Bounds3& b, uint32_t nb,
+                  float apart_extra = 0.0f) {
+  Bounds3 both = a;
+  both.grow(b);
+  const float area = both.surface_area();
+  return area * leaf_cost(na + nb) <=
+         area * apart_extra + a.surface_area() * leaf_cost(na) + b.surface_area() * leaf_cost(nb);
+}
+
+/// Whether the small subtree of slot `s` (s.small entries, a binary interior node) pays as one
+/// leaf, if it is a slot of its own (apart_extra 0) or would otherwise become a wide node of its
+/// own (apart_extra: kNodeVisitCost).
+bool pack_subtree(const std::vector<BvhNode>& bin, const Slot& s, float apart_extra) {
+  const BvhNode& node = bin[s.node];
+  uint32_t unused;
+  const uint32_t left = entries_up_to(bin, s.node + 1, s.small, &unused);
+  return packing_pays(bin[s.node + 1].bounds, left, bin[node.offset].bounds, s.small - left,
+                      apart_extra);
+}
+
 /// The slot for binary node `index`: a leaf when it is a binary leaf or its whole subtree fits
-/// WideBvh::kPackedLeafEntries (the binary tree's small leaves are packed four triangles to a
-/// packet, so the SIMD test's lanes are full), else a subtree to open or collapse.
+/// WideBvh::kPackedLeafEntries and packing its two halves pays (the binary tree's small leaves
+/// are packed four triangles to a packet, so the SIMD test's lanes are full), else a subtree to
+/// open or collapse.
 Slot make_slot(const std::vector<BvhNode>& bin, uint32_t index) {
-  Slot s{index, 0, 0, bin[index].bounds, bin[index].bounds.surface_area()};
+  const BvhNode& node = bin[index];
+  Slot s{index, 0, 0, node.bounds, node.bounds.surface_area()};
   const uint32_t n = entries_up_to(bin, index, WideBvh::kPackedLeafEntries, &s.first);
-  if (bin[index].is_leaf() || n <= WideBvh::kPackedLeafEntries) s.count = n;
+  if (node.is_leaf()) {
+    s.count = n;
+  } else if (n <= WideBvh::kPackedLeafEntries) {
+    s.small = n;
+    if (pack_subtree(bin, s, 0.0f)) s.count = n;
+  }
   return s;
 }
 
 }  // namespace
+
+int WideBvh::regroup_leaf(uint32_t first, uint32_t count, int max_groups, uint32_t* sizes) {
+  // Start from one group an entry and join the pair that pays most, while a pair pays.
+  struct Group {
+    Bounds3 box;
+    uint32_t count;
+    uint32_t lowest;  ///< its first entry's place in the leaf, to keep the leaf's order
+  };
+  Group groups[kPackedLeafEntries];
+  uint32_t member[kPackedLeafEntries];  ///< each entry's group
+  int n = int(count);
+  for (uint32_t e = 0; e < count; ++e) {
+    groups[e] = {scene_.primitive_bounds(order_[first + e]), 1, e};
+    member[e] = e;
+  }
+  for (;;) {
+    int best_i = -1, best_j = -1;
+    float best_gain = 0.0f;
+    for (int i = 0; i < n; ++i)
+      for (int j = i + 1; j < n; ++j) {
+        const Group &a = groups[i], &b = groups[j];
+        if (!packing_pays(a.box, a.count, b.box, b.count)) continue;
+        Bounds3 both = a.box;
+        both.grow(b.box);
+        const float gain = a.box.surface_area() * leaf_cost(a.count) +
+                           b.box.surface_area() * leaf_cost(b.count) -
+                           both.surface_area() * leaf_cost(a.count + b.count);
+        if (best_i < 0 || gain > best_gain) best_i = i, best_j = j, best_gain = gain;
+      }
+    if (best_i < 0) break;
+    groups[best_i].box.grow(groups[best_j].box);
+    groups[best_i].count += groups[best_j].count;
+    groups[best_i].lowest = std::min(groups[best_i].lowest, groups[best_j].lowest);
+    for (uint32_t e = 0; e < count; ++e) {
+      if (member[e] == uint32_t(best_j)) member[e] = uint32_t(best_i);
+      if (member[e] == uint32_t(n - 1)) member[e] = uint32_t(best_j);
+    }
+    groups[best_j] = groups[n - 1];
+    --n;
+  }
+  if (n < 2 || n > max_groups) return 1;
+  // The groups in the order of their first entries, each group's entries in the leaf's order.
+  int rank[kPackedLeafEntries];
+  for (int g = 0; g < n; ++g) rank[g] = g;
+  std::sort(rank, rank + n, [&](int a, int b) { return groups[a].lowest < groups[b].lowest; });
+  uint32_t reordered[kPackedLeafEntries];
+  uint32_t out = 0;
+  for (int r = 0; r < n; ++r) {
+    for (uint32_t e = 0; e < count; ++e)
+      if (member[e] == uint32_t(rank[r])) reordered[out++] = order_[first + e];
+    sizes[r] = groups[rank[r]].count;
+  }
+  std::copy(reordered, reordered + count, order_.begin() + first);
+  return n;
+}
 
 uint32_t WideBvh::collapse(const std::vector<BvhNode>& bin, uint32_t index, uint32_t depth) {
   if (depth > uint32_t(Bvh::kMaxDepth))
@@ -211,6 +312,7 @@ uint32_t WideBvh::collapse(const std::vector<BvhNode>& bin, uint32_t index, uint
   // A leaf at the root still gets a node above it, so every traversal starts the same way.
   constexpr int kWidth = WideNode::kWidth;
   Slot slots[kWidth];
+  uint32_t group_sizes[WideBvh::kPackedLeafEntries];
   int n = 0;
   slots[n++] = make_slot(bin, index);
   // Slots stay in the binary tree's order throughout, so neighbouring leaves hold neighbouring
@@ -237,7 +339,9 @@ uint32_t WideBvh::collapse(const std::vector<BvhNode>& bin, uint32_t index, uint
     for (int k = 0; k + 1 < n; ++k) {
       Slot& a = slots[k];
       const Slot& b = slots[k + 1];
-      if (a.count == 0 || b.count == 0 || a.count + b.count > WideBvh::kPackedLeafEntries) continue;
+      if (a.count == 0 || b.count == 0 || a.count + b.count > WideBvh::kPackedLeafEntries ||
+          !packing_pays(a.box, a.count, b.box, b.count))
+        continue;
       a.count += b.count;
       a.box.grow(b.box);
       a.area = a.box.surface_area();
@@ -251,6 +355,37 @@ uint32_t WideBvh::collapse(const std::vector<BvhNode>& bin, uint32_t index, uint
     bool can_open = false;
     for (int k = 0; k < n; ++k) can_open |= slots[k].count == 0;
     if (!can_open) break;
+  }
+  // A small subtree left closed would become a wide node of its own: a leaf may pay now.
+  for (int k = 0; k < n; ++k)
+    if (slots[k].count == 0 && slots[k].small > 0 && pack_subtree(bin, slots[k], kNodeVisitCost))
+      slots[k].count = slots[k].small;
+  // Slots still free (a scene of a few primitives): a leaf of the student's tree may hold entries
+  // far apart (CBspheres_lambertian's floor and both spheres, in one box from the floor to the
+  // spheres' tops, which every shadow ray from the floor starts in), so its entries are grouped
+  // again as the area heuristic would pack them (a quad's two triangles stay together, the
+  // spheres go apart), and the groups take a slot each where there is room.
+  for (int k = 0; k < n; ++k) {
+    const Slot leaf = slots[k];
+    if (leaf.count < 2 || leaf.count > WideBvh::kPackedLeafEntries || n == kWidth) continue;
+    const int groups = regroup_leaf(leaf.first, leaf.count, kWidth - n + 1, group_sizes);
+    if (groups < 2) continue;
+    const int extra = groups - 1;
+    for (int j = n - 1; j > k; --j) slots[j + extra] = slots[j];
+    uint32_t first = leaf.first;
+    for (int g = 0; g < groups; ++g) {
+      Slot& part = slots[k + g];
+      part = leaf;
+      part.first = first;
+      part.count = group_sizes[g];
+      part.box = Bounds3{};
+      for (uint32_t e = first; e < first + part.count; ++e)
+        part.box.grow(scene_.primitive_bounds(order_[e]));
+      part.area = part.box.surface_area();
+      first += part.count;
+    }
+    n += extra;
+    k += extra;
   }
   const uint32_t self = uint32_t(nodes_.size());
   {
@@ -489,7 +624,7 @@ void WideBvh::find_nearest(const Ray& ray, Nearest* best) const {
 }
 
 bool WideBvh::intersect(const Ray& ray, SurfaceHit* hit) const {
-  if (nodes_.empty() || !is_traceable(ray)) return false;
+  if (nodes_.empty() || !traceable(ray)) return false;
   Nearest best;
   find_nearest<false, true>(ray, &best);
   if (!best.found()) return false;
@@ -510,7 +645,7 @@ bool WideBvh::intersect(const Ray& ray, SurfaceHit* hit) const {
 }
 
 bool WideBvh::nearest(const Ray& ray, NearestHit* hit) const {
-  if (nodes_.empty() || !is_traceable(ray)) return false;
+  if (nodes_.empty() || !traceable(ray)) return false;
   Nearest best;
   find_nearest<false, false>(ray, &best);
   if (!best.found()) return false;
@@ -519,7 +654,7 @@ bool WideBvh::nearest(const Ray& ray, NearestHit* hit) const {
 }
 
 bool WideBvh::occluded(const Ray& ray) const {
-  if (nodes_.empty() || !is_traceable(ray)) return false;
+  if (nodes_.empty() || !traceable(ray)) return false;
   const ShearedRay4 sheared4(ray);
   const ShearedRay& sheared = sheared4.r;
   const Box4Ray box_ray(ray);

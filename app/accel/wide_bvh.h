@@ -77,7 +77,8 @@ struct NearestHit {
 /// A wide BVH over a scene's primitives (triangles and spheres), made from a binary Bvh by
 /// pulling each node's largest grandchildren up until it has WideNode::kWidth children; a subtree of at most
 /// kPackedLeafEntries entries, or neighbouring leaves that fit that together, become one leaf
-/// (packets of the four-triangle SIMD test), larger binary leaves are kept whole; children are visited in an order
+/// (packets of the four-triangle SIMD test) where the surface area heuristic says one leaf is
+/// cheaper than two, larger binary leaves are kept whole; children are visited in an order
 /// per octant of directions made from the binary splits. Answers the same queries as BruteForce
 /// with the same answers: the nearest hit judged on the t each primitive reports (ties go to the
 /// lower primitive index), its SurfaceHit made once, by Part 1's intersect_primitive, for the
@@ -102,9 +103,10 @@ class WideBvh final : public RayQuery {
   /// The leaf-order entry of lane 0 of packet `packet` (a leaf's entries fill its packets in order).
   uint32_t packet_entry(uint32_t packet) const { return packets_[packet].first; }
 
-  /// A subtree of at most this many entries becomes one leaf (two packets), and neighbouring
-  /// leaves are merged up to it: the traversal waits on memory, and a node visit is a cache miss
-  /// in series where a leaf's second packet arrives with its first.
+  /// A subtree of at most this many entries may become one leaf (two packets), and neighbouring
+  /// leaves may be merged up to it, where their union box is not much larger than the parts: the
+  /// traversal waits on memory, and a node visit is a cache miss in series where a leaf's second
+  /// packet arrives with its first.
   static constexpr uint32_t kPackedLeafEntries = 2 * Triangle4::kLanes;
 
   /// Entries a traversal stack can need: each visit pops one node and pushes at most all but
@@ -119,6 +121,11 @@ class WideBvh final : public RayQuery {
   struct Nearest;
 
   uint32_t collapse(const std::vector<BvhNode>& binary, uint32_t index, uint32_t depth);
+  /// Groups the leaf-order entries [first, first + count) (at most kPackedLeafEntries) as the
+  /// surface area heuristic packs them; if that makes 2 to max_groups groups, reorders the
+  /// entries so each group is a run, writes the runs' sizes to sizes[] and returns how many;
+  /// else changes nothing and returns 1.
+  int regroup_leaf(uint32_t first, uint32_t count, int max_groups, uint32_t* sizes);
   /// Appends the packets of the leaf-order entries [first, first + count).
   void add_packets(uint32_t first, uint32_t count);
   Corners corners(uint32_t packet, uint32_t lane) const {

@@ -271,6 +271,44 @@ TEST(WideBvhDegenerate, NonFiniteRaysAreMissesInEveryQuery) {
 
 /// Checks the tree: every leaf-order entry in exactly one leaf whose box holds it, one to four
 /// children a node, unused slots empty, every node the child of exactly one other (or the root).
+// A floor and two spheres in one leaf of the student's tree (midpoint splits stop at four
+// entries): the wide root has room, so the floor's two triangles keep one slot and each sphere
+// gets its own, boxed tightly, and the answers stay brute force's.
+TEST(WideBvhBuild, EntriesFarApartInOneLeafGetSlotsOfTheirOwn) {
+  Scene scene;
+  add_triangle(&scene, {-1, -1, 0}, {1, -1, 0}, {1, 1, 0});
+  add_triangle(&scene, {-1, -1, 0}, {1, 1, 0}, {-1, 1, 0});
+  scene.spheres.push_back(Sphere{glm::vec3(-0.5f, 0.2f, 0.3f), 0.3f, 0});
+  scene.spheres.push_back(Sphere{glm::vec3(0.5f, -0.3f, 0.3f), 0.3f, 0});
+  const Bvh binary(scene, BvhOptions{BvhSplitMethod::median, 4, 16, {}});
+  ASSERT_EQ(binary.nodes().size(), 1u) << "the input should be one binary leaf";
+  const WideBvh wide(scene, binary);
+  ASSERT_EQ(wide.nodes().size(), 1u);
+  const WideNode& root = wide.nodes()[0];
+  ASSERT_EQ(wide.children(0), 3u);
+  int spheres = 0, floors = 0;
+  for (int k = 0; k < 3; ++k) {
+    const uint32_t first = wide.packet_entry(root.child[k]);
+    if (root.count[k] == 2) {
+      ++floors;
+      for (uint32_t e = first; e < first + 2; ++e) EXPECT_TRUE(scene.is_triangle(wide.order()[e]));
+    } else {
+      ASSERT_EQ(root.count[k], 1u);
+      const uint32_t prim = wide.order()[first];
+      ASSERT_FALSE(scene.is_triangle(prim));
+      ++spheres;
+      const Bounds3 want = scene.primitive_bounds(prim);
+      for (int a = 0; a < 3; ++a) {
+        EXPECT_EQ(root.boxes[k / 4].bounds[a][k % 4], want.lo[a]);
+        EXPECT_EQ(root.boxes[k / 4].bounds[3 + a][k % 4], want.hi[a]);
+      }
+    }
+  }
+  EXPECT_EQ(floors, 1);
+  EXPECT_EQ(spheres, 2);
+  expect_brute_force_answers(scene, BvhSplitMethod::median, 4, test::random_rays(scene, 100000, 7));
+}
+
 TEST(WideBvhBuild, TreeIsWellFormed) {
   Scene scene;
   std::string why;

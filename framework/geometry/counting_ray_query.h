@@ -45,4 +45,30 @@ class CountingRayQuery final : public RayQuery {
       counts_{0};
 };
 
+/// A RayQuery that forwards every query to a query of type Inner and counts it in a plain
+/// counter: one thread's, for as long as one piece of work (a camera sample's path) lasts, made
+/// on the stack around it. Counting is then an increment, with no thread-local lookup, and where
+/// Inner is a final class its calls are direct ones, not a second virtual call per ray.
+template <class Inner>
+class LocalCountingRayQuery final : public RayQuery {
+ public:
+  explicit LocalCountingRayQuery(const Inner& inner) : inner_(inner) {}
+
+  bool intersect(const Ray& ray, SurfaceHit* hit) const override {
+    ++count_;
+    return inner_.intersect(ray, hit);
+  }
+  bool occluded(const Ray& ray) const override {
+    ++count_;
+    return inner_.occluded(ray);
+  }
+
+  /// The queries answered so far.
+  uint64_t count() const { return count_; }
+
+ private:
+  const Inner& inner_;
+  mutable uint64_t count_ = 0;
+};
+
 }  // namespace pt

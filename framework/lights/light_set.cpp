@@ -11,6 +11,7 @@
 
 #include "framework/math/float_error.h"
 #include "framework/math/frame.h"
+#include "framework/math/vec3_lanes.h"
 #include "framework/sampling/warp.h"
 
 namespace pt {
@@ -84,17 +85,22 @@ glm::vec3 triangle_normal(const glm::vec3& a, const glm::vec3& b, const glm::vec
   return glm::dot(n, side) < 0.0f ? -n : n;
 }
 
-// triangle_normal of each of `triangles`, in their order.
-std::vector<glm::vec3> triangle_normals(const Scene& scene, const std::vector<uint32_t>& triangles,
-                                        const glm::vec3& side) {
-  std::vector<glm::vec3> normals;
-  normals.reserve(triangles.size());
+// Each of `triangles`' corners and triangle_normal, in their order.
+std::vector<SampledLight::SampledTriangle> sampled_triangles(const Scene& scene,
+                                                             const std::vector<uint32_t>& triangles,
+                                                             const glm::vec3& side) {
+  std::vector<SampledLight::SampledTriangle> out;
+  out.reserve(triangles.size());
   for (uint32_t prim : triangles) {
     const Triangle& tri = scene.triangles[prim];
-    normals.push_back(triangle_normal(scene.positions[tri.v[0]], scene.positions[tri.v[1]],
-                                      scene.positions[tri.v[2]], side));
+    SampledLight::SampledTriangle t;
+    t.a = scene.positions[tri.v[0]];
+    t.b = scene.positions[tri.v[1]];
+    t.c = scene.positions[tri.v[2]];
+    t.n = triangle_normal(t.a, t.b, t.c, side);
+    out.push_back(t);
   }
-  return normals;
+  return out;
 }
 
 std::string number(float v) {
@@ -155,33 +161,50 @@ std::string panel_disagreement(const Scene& scene, const SampledLight& l,
 }
 
 // A point on one of light l's triangles, picked with probability area / l.area and uniformly on
-// it; `side` non-zero makes the light one-sided (a panel). Fills ls and returns whether the point
-// can send light towards p.
-bool sample_triangles(const Scene& scene, const SampledLight& l, const glm::vec3& p, glm::vec2 u,
-                      const glm::vec3& side, LightSample* ls) {
-  float pdf_c;
+// it; one-sided (a panel) or not. Fills ls and returns whether the point can send light towards
+// p. Every light sample of a panel or mesh light comes here: its triangle's corners and normal
+// are read from the light's own table, and 1 / area is the light's.
+bool sample_triangles(const SampledLight& l, const glm::vec3& p, glm::vec2 u, bool one_sided,
+                      LightSample* ls) {
   int cell;
-  const float x = l.triangle_pick.sample_continuous(u.x, &pdf_c, &cell);
+  const float x = l.triangle_pick.sample_continuous(u.x, nullptr, &cell);
   const float u0 = std::clamp(x * float(l.triangle_pick.size()) - float(cell), 0.0f, 1.0f);
-  const Triangle& tri = scene.triangles[l.triangles[cell]];
-  const glm::vec3 &a = scene.positions[tri.v[0]], &b = scene.positions[tri.v[1]],
-                  &c = scene.positions[tri.v[2]];
-  const glm::vec3 bary = square_to_uniform_triangle({u0, u.y});
-  const glm::vec3 q = bary.x * a + bary.y * b + bary.z * c;
-  const glm::vec3 n = l.triangle_normals[cell];
+  const SampledLight::SampledTriangle& t = l.sampled_triangles[cell];
+  const glm::vec3 n = t.n;
   if (n == glm::vec3(0.0f)) return false;
+  const glm::vec3 bary = square_to_uniform_triangle({u0, u.y});
+#if PT_VEC3_LANES
+  // glm's operations below, three lanes at a time (framework/math/vec3_lanes.h): the same bits.
+  using namespace lanes;
+  const V3 wa = mul(splat(bary.x), load(t.a)), wb = mul(splat(bary.y), load(t.b)),
+           wc = mul(splat(bary.z), load(t.c));
+  const V3 q = add(add(wa, wb), wc);
+  const V3 d = sub(q, load(p));
+  const float dist = std::sqrt(lanes::dot(d, d));
+  if (!(dist > 0.0f) || !std::isfinite(dist)) return false;
+  const V3 wi = div(d, splat(dist));
+  ls->wi = to_vec3(wi);
+  ls->distance = dist;
+  ls->p = to_vec3(q);
+  ls->p_error = to_vec3(mul(splat(gamma(6)), add(add(glm_abs(wa), glm_abs(wb)), glm_abs(wc))));
+  ls->n = n;
+  const float cos_l = lanes::dot(neg(wi), load(n));
+#else
+  const glm::vec3 wa = bary.x * t.a, wb = bary.y * t.b, wc = bary.z * t.c;
+  const glm::vec3 q = wa + wb + wc;
   const glm::vec3 d = q - p;
   const float dist = glm::length(d);
   if (!(dist > 0.0f) || !std::isfinite(dist)) return false;
   ls->wi = d / dist;
   ls->distance = dist;
   ls->p = q;
-  ls->p_error = gamma(6) * (glm::abs(bary.x * a) + glm::abs(bary.y * b) + glm::abs(bary.z * c));
+  ls->p_error = gamma(6) * (glm::abs(wa) + glm::abs(wb) + glm::abs(wc));
   ls->n = n;
   const float cos_l = glm::dot(-ls->wi, n);
-  if (side != glm::vec3(0.0f) && !(cos_l > 0.0f)) return false;  // the back of a panel
+#endif
+  if (one_sided && !(cos_l > 0.0f)) return false;  // the back of a panel
   // Picking the triangle with probability area/total and a point uniformly on it: 1/total.
-  ls->pdf = area_to_solid_angle_pdf(1.0f / l.area, dist, cos_l);
+  ls->pdf = area_to_solid_angle_pdf(l.inv_area, dist, cos_l);
   ls->L = ls->pdf > 0.0f ? l.radiance : glm::vec3(0.0f);
   return true;
 }
@@ -264,12 +287,12 @@ LightSet::LightSet(const Scene& scene, const EnvironmentMap* environment)
     l.area = 0.0f;
     for (float a : panel_areas[k]) l.area += a;
     l.triangle_pick = Distribution1D(panel_areas[k]);
-    l.triangle_normals = triangle_normals(scene, l.triangles, l.normal);
+    l.sampled_triangles = sampled_triangles(scene, l.triangles, l.normal);
     for (uint32_t prim : l.triangles) primitive_light_[prim] = int(k);
   }
   for (auto& [material, m] : meshes) {
     m.triangle_pick = Distribution1D(mesh_areas[material]);
-    m.triangle_normals = triangle_normals(scene, m.triangles, glm::vec3(0.0f));
+    m.sampled_triangles = sampled_triangles(scene, m.triangles, glm::vec3(0.0f));
     for (uint32_t prim : m.triangles) primitive_light_[prim] = int(lights_.size());
     lights_.push_back(std::move(m));
   }
@@ -298,6 +321,8 @@ LightSet::LightSet(const Scene& scene, const EnvironmentMap* environment)
     s.kind = SampledLightKind::image_environment;
     lights_.push_back(std::move(s));
   }
+  for (SampledLight& l : lights_)
+    if (l.area > 0.0f) l.inv_area = 1.0f / l.area;
 }
 
 glm::vec3 LightSet::environment_radiance(const glm::vec3& dir) const {
@@ -308,6 +333,17 @@ glm::vec3 LightSet::environment_radiance(const glm::vec3& dir) const {
 
 LightSample LightSet::sample(int index, const SurfaceHit& hit, glm::vec2 u) const {
   const SampledLight& l = lights_[index];
+  // Panels and meshes (every light of the course's scenes) first, filling the returned sample in
+  // place: the switch below returns either its sample or an empty one, so its result is copied.
+  if (l.kind != SampledLightKind::panel && l.kind != SampledLightKind::mesh)
+    return sample_other(l, hit, u);
+  LightSample ls;
+  if (!sample_triangles(l, hit.p, u, l.kind == SampledLightKind::panel, &ls)) ls = LightSample{};
+  return ls;
+}
+
+LightSample LightSet::sample_other(const SampledLight& l, const SurfaceHit& hit,
+                                   glm::vec2 u) const {
   LightSample ls;
   const glm::vec3 p = hit.p;
   auto finish_at = [&](const glm::vec3& q, const glm::vec3& q_error, const glm::vec3& n) {
@@ -357,11 +393,8 @@ LightSample LightSet::sample(int index, const SurfaceHit& hit, glm::vec2 u) cons
       return ls;
     }
     case SampledLightKind::panel:
-      if (!sample_triangles(scene_, l, p, u, l.normal, &ls)) return {};
-      return ls;
     case SampledLightKind::mesh:
-      if (!sample_triangles(scene_, l, p, u, glm::vec3(0.0f), &ls)) return {};
-      return ls;
+      return {};  // sample() samples these
     case SampledLightKind::sphere: {
       const Sphere& s = scene_.spheres[l.sphere];
       glm::vec3 dc = s.center - p;

@@ -82,9 +82,15 @@ struct SampledLight {
   float area = 0.0f;                    ///< the surface it samples: parallelogram, triangles or sphere
   std::vector<uint32_t> triangles;      ///< panel, mesh: its triangles (primitive indices)
   Distribution1D triangle_pick;         ///< panel, mesh: by area
-  /// panel, mesh: each triangle's unit normal (turned to `normal` for a panel; zero when
-  /// degenerate), made once: every light sample of a render needs its triangle's
-  std::vector<glm::vec3> triangle_normals;
+  /// panel, mesh: each triangle's corners and unit normal (turned to `normal` for a panel; zero
+  /// when degenerate), copied side by side once: every light sample of a render needs its
+  /// triangle's, and reading them through the scene's triangle and position arrays was three
+  /// dependent loads a sample
+  struct SampledTriangle {
+    glm::vec3 a{0.0f}, b{0.0f}, c{0.0f}, n{0.0f};
+  };
+  std::vector<SampledTriangle> sampled_triangles;
+  float inv_area = 0.0f;                ///< 1 / area, once
   uint32_t sphere = 0;                  ///< sphere light: index into Scene::spheres
   bool is_delta() const {
     return kind == SampledLightKind::point || kind == SampledLightKind::spot ||
@@ -136,6 +142,9 @@ class LightSet {
   bool unoccluded(const RayQuery& query, const Ray& ray, int index) const;
 
  private:
+  /// sample() for every kind but panels and meshes.
+  LightSample sample_other(const SampledLight& l, const SurfaceHit& hit, glm::vec2 u) const;
+
   const Scene& scene_;
   const EnvironmentMap* environment_ = nullptr;
   std::vector<SampledLight> lights_;

@@ -7,13 +7,16 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include <glm/geometric.hpp>
 
+#include "framework/math/float_error.h"
 #include "framework/sampling/chi2_test_util.h"
 #include "framework/sampling/rng.h"
+#include "framework/sampling/warp.h"
 #include "framework/testing/test_scenes.h"
 
 namespace pt {
@@ -128,6 +131,79 @@ SurfaceHit panel_hit(const glm::vec3& p, uint32_t primitive) {
   h.n = h.ng;
   h.primitive = primitive;
   return h;
+}
+
+/// A sample of panel or mesh light `l` as its definition computes it in glm, one component at a
+/// time: LightSet::sample does these operations in SIMD lanes where the build has them, and must
+/// give the same bits.
+LightSample triangle_sample_by_definition(const SampledLight& l, const glm::vec3& p, glm::vec2 u,
+                                          bool one_sided) {
+  int cell;
+  const float x = l.triangle_pick.sample_continuous(u.x, nullptr, &cell);
+  const float u0 = std::clamp(x * float(l.triangle_pick.size()) - float(cell), 0.0f, 1.0f);
+  const SampledLight::SampledTriangle& t = l.sampled_triangles[cell];
+  if (t.n == glm::vec3(0.0f)) return {};
+  const glm::vec3 bary = square_to_uniform_triangle({u0, u.y});
+  const glm::vec3 q = bary.x * t.a + bary.y * t.b + bary.z * t.c;
+  const glm::vec3 d = q - p;
+  const float dist = glm::length(d);
+  if (!(dist > 0.0f) || !std::isfinite(dist)) return {};
+  LightSample ls;
+  ls.wi = d / dist;
+  ls.distance = dist;
+  ls.p = q;
+  ls.p_error = gamma(6) * (glm::abs(bary.x * t.a) + glm::abs(bary.y * t.b) + glm::abs(bary.z * t.c));
+  ls.n = t.n;
+  const float cos_l = glm::dot(-ls.wi, t.n);
+  if (one_sided && !(cos_l > 0.0f)) return {};
+  ls.pdf = area_to_solid_angle_pdf(1.0f / l.area, dist, cos_l);
+  ls.L = ls.pdf > 0.0f ? l.radiance : glm::vec3(0.0f);
+  return ls;
+}
+
+void expect_same_bits(const glm::vec3& a, const glm::vec3& b, const char* what, int i) {
+  for (int k = 0; k < 3; ++k)
+    ASSERT_EQ(float_to_bits(a[k]), float_to_bits(b[k])) << what << "[" << k << "], sample " << i;
+}
+
+// Panels (one-sided) and meshes (two-sided), seen from points all around them, some on the light
+// itself, at zero coordinates of either sign and far away: every field of every sample is the
+// definition's, to the bit.
+TEST(FrameworkLightSet, TriangleLightSamplesAreTheirDefinitionBitForBit) {
+  Scene s = panel_on_light(0.4f, 0.3f, 10.0f, {0.8f, 0, 0}, {0, 0.6f, 0}, 10.0f);
+  const uint32_t glow = test::add_material(s, glm::vec3(0), glm::vec3(2.0f, 3.0f, 4.0f));
+  test::add_triangle(s, {-1, -0.5f, -1}, {1.5f, -0.7f, -1.2f}, {0.2f, 1.0f, -0.6f}, glow);
+  test::add_triangle(s, {2, 2, 2}, {3, 2, 2.5f}, {2, 4, 2}, glow);
+  // In the plane x = -0: the error bound's x is glm::abs's sum of -0s, which is -0.
+  test::add_triangle(s, {-0.0f, 1, 2}, {-0.0f, 2, 2}, {-0.0f, 1, 3}, glow);
+  const LightSet lights(s);
+  ASSERT_EQ(lights.lights().size(), 2u);
+  ASSERT_EQ(lights.lights()[0].kind, SampledLightKind::panel);
+  ASSERT_EQ(lights.lights()[1].kind, SampledLightKind::mesh);
+  Rng rng(11, 4);
+  long kept = 0;
+  for (int i = 0; i < 20000; ++i) {
+    SurfaceHit at;
+    at.p = glm::vec3(rng.next_float() * 6 - 3, rng.next_float() * 6 - 3, rng.next_float() * 6 - 3);
+    if (i % 5 == 0) at.p[i % 3] = i % 2 ? 0.0f : -0.0f;
+    if (i % 7 == 0) at.p *= 1e4f;
+    if (i % 11 == 0) at.p = glm::vec3(0.1f, 0.05f, 1.0f);  // on the panel
+    const glm::vec2 u = rng.next_2d();
+    for (int k = 0; k < 2; ++k) {
+      const LightSample got = lights.sample(k, at, u);
+      const LightSample want = triangle_sample_by_definition(lights.lights()[k], at.p, u, k == 0);
+      expect_same_bits(got.wi, want.wi, "wi", i);
+      expect_same_bits(got.L, want.L, "L", i);
+      expect_same_bits(got.p, want.p, "p", i);
+      expect_same_bits(got.p_error, want.p_error, "p_error", i);
+      expect_same_bits(got.n, want.n, "n", i);
+      ASSERT_EQ(float_to_bits(got.pdf), float_to_bits(want.pdf)) << "pdf, sample " << i;
+      ASSERT_EQ(float_to_bits(got.distance), float_to_bits(want.distance)) << "distance, " << i;
+      ASSERT_EQ(got.delta, want.delta);
+      kept += want.pdf > 0.0f;
+    }
+  }
+  EXPECT_GT(kept, 20000) << "most samples should reach the point";
 }
 
 TEST(FrameworkLightSet, APanelThatMatchesItsLightSaysNothing) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace pt {
 
@@ -24,6 +25,7 @@ Distribution1D::Distribution1D(std::vector<float> func) : func_(std::move(func))
   }
   cdf_[n] = 1.0f;
   for (int i = 0; i < n; ++i) has_empty_cell_ = has_empty_cell_ || !(cdf_[i + 1] > cdf_[i]);
+  if (n <= kCountedCells) cdf_.resize((cdf_.size() + 3) / 4 * 4, std::numeric_limits<float>::infinity());
 }
 
 float Distribution1D::pdf_continuous(float x) const {

@@ -3,7 +3,15 @@
 #pragma once
 
 #include <algorithm>
+#include <cstdint>
 #include <vector>
+
+#if defined(__SSE2__) || defined(_M_X64) || (defined(_M_IX86_FP) && _M_IX86_FP >= 2)
+#define PT_DISTRIBUTION_SSE 1
+#include <emmintrin.h>
+#else
+#define PT_DISTRIBUTION_SSE 0
+#endif
 
 #include <glm/vec2.hpp>
 
@@ -37,15 +45,39 @@ class Distribution1D {
  private:
   int find_cell(float u) const {
     // Last i with cdf_[i] <= u, and never a cell of zero probability.
-    int i = int(std::upper_bound(cdf_.begin(), cdf_.end(), u) - cdf_.begin()) - 1;
+    int i;
+    if (size() <= kCountedCells) {
+      // upper_bound's very answer (the number of entries u is not below: the CDF is sorted),
+      // counted without a branch on u. A light of a few triangles picks its cell here for every
+      // sample, and a binary search's branch on a uniform u is mispredicted every other time.
+      // The padding (+inf) is never counted but for a NaN u, which upper_bound also sends past
+      // the last cell: the clamp below makes both the last cell.
+      const float* cdf = cdf_.data();
+      int not_below = 0;
+#if PT_DISTRIBUTION_SSE
+      static constexpr int8_t kBits[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
+      const __m128 uu = _mm_set1_ps(u);
+      for (size_t k = 0; k < cdf_.size(); k += 4)
+        not_below += kBits[_mm_movemask_ps(_mm_cmpnlt_ps(uu, _mm_loadu_ps(cdf + k)))];
+#else
+      for (size_t k = 0; k < cdf_.size(); ++k) not_below += !(u < cdf[k]);
+#endif
+      i = not_below - 1;
+    } else {
+      i = int(std::upper_bound(cdf_.begin(), cdf_.begin() + size() + 1, u) - cdf_.begin()) - 1;
+    }
     i = std::clamp(i, 0, size() - 1);
     if (!has_empty_cell_) return i;  // the walks below would not move
     while (i > 0 && cdf_[i + 1] <= cdf_[i]) --i;
     while (i < size() - 1 && cdf_[i + 1] <= cdf_[i]) ++i;
     return i;
   }
+  /// Distributions of at most this many cells find a cell by counting (see find_cell).
+  static constexpr int kCountedCells = 16;
   std::vector<float> func_;
-  std::vector<float> cdf_;  ///< n+1 entries, cdf_[0] = 0, cdf_[n] = 1
+  /// n+1 entries, cdf_[0] = 0, cdf_[n] = 1; for n <= kCountedCells, then +inf up to a multiple
+  /// of four, so find_cell counts four at a time
+  std::vector<float> cdf_;
   float integral_ = 0.0f;
   bool has_empty_cell_ = false;  ///< whether some cdf_[i + 1] <= cdf_[i] (zero, or rounded away)
 };

@@ -33,10 +33,32 @@ std::unique_ptr<Integrator> Integrator::create(const RenderSettings& settings, c
   return in;
 }
 
+namespace {
+
+glm::vec3 estimate(const LightingContext& ctx, bool normals, bool direct_only, const Ray& ray,
+                   Rng& rng) {
+  if (normals) return normal_shading(ctx.query, ray);
+  if (direct_only) return estimate_direct_illumination(ctx, ray, rng);
+  return estimate_global_illumination(ctx, ray, rng);
+}
+
+}  // namespace
+
 glm::vec3 Integrator::radiance(const Ray& ray, Rng& rng) const {
-  if (normals_) return normal_shading(ctx_->query, ray);
-  if (direct_only_) return estimate_direct_illumination(*ctx_, ray, rng);
-  return estimate_global_illumination(*ctx_, ray, rng);
+  return estimate(*ctx_, normals_, direct_only_, ray, rng);
+}
+
+glm::vec3 Integrator::radiance(const Ray& ray, Rng& rng, const RayQuery& query) const {
+  const LightingContext& c = *ctx_;
+  // Every field of the context but the query, which a reference cannot be reseated to.
+  LightingContext with_query{c.scene, query, c.lights};
+  with_query.light_samples = c.light_samples;
+  with_query.hemisphere = c.hemisphere;
+  with_query.mis = c.mis;
+  with_query.max_depth = c.max_depth;
+  with_query.russian_roulette = c.russian_roulette;
+  with_query.only_bounce = c.only_bounce;
+  return estimate(with_query, normals_, direct_only_, ray, rng);
 }
 
 }  // namespace pt

@@ -30,6 +30,9 @@ class Integrator {
                                             const RayQuery& query, std::string* error);
 
   glm::vec3 radiance(const Ray& ray, Rng& rng) const;
+  /// The same estimate, drawing the same random numbers, with every ray asked of `query`
+  /// instead (a counter of this one sample's rays around the query it was created with).
+  glm::vec3 radiance(const Ray& ray, Rng& rng, const RayQuery& query) const;
   bool shows_normals() const { return normals_; }
   const LightSet& lights() const { return *lights_; }
   const LightingContext& context() const { return *ctx_; }

@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "framework/geometry/counting_ray_query.h"
 #include "framework/testing/lighting_rig.h"
 #include "framework/testing/test_scenes.h"
 #include "parts/4-global/global_illumination.h"
@@ -79,6 +80,55 @@ TEST(PipelineIntegrator, DirectLightIsThePathEstimateAtDepthsZeroAndOne) {
         }
       }
   EXPECT_EQ(compared, 2 * 3 * 2 * 300);
+}
+
+// A render hands each camera sample a counter of its own around the query; the estimate through it
+// is the integrator's own, to the bit, whatever the settings (a setting the per-sample context
+// failed to carry over would change it), and the counter sees every ray.
+TEST(PipelineIntegrator, ASampleTracedThroughAnotherQueryGivesTheSameEstimate) {
+  Scene s;
+  const uint32_t white = test::add_material(s, glm::vec3(0.6f));
+  const uint32_t glow = test::add_material(s, glm::vec3(0.0f), glm::vec3(4.0f));
+  test::add_quad(s, {-3, -3, 0}, {3, -3, 0}, {3, 3, 0}, {-3, 3, 0}, white);
+  test::add_quad(s, {-3, -3, 0}, {-3, 3, 0}, {-3, 3, 3}, {-3, -3, 3}, white);
+  test::add_quad(s, {-0.5f, -0.5f, 2}, {0.5f, -0.5f, 2}, {0.5f, 0.5f, 2}, {-0.5f, 0.5f, 2}, glow);
+  test::DoubleQuery query(s);
+  long compared = 0;
+  for (int light_samples : {1, 3})
+    for (bool hemisphere : {false, true})
+      for (bool mis : {false, true})
+        for (int depth : {1, 4})
+          for (bool roulette : {true, false})
+            for (int only : {-1, 2}) {
+              RenderSettings settings;
+              settings.light_samples = light_samples;
+              settings.hemisphere_sampling = hemisphere;
+              settings.mis = mis;
+              settings.max_depth = depth;
+              settings.russian_roulette = roulette;
+              settings.only_bounce = only;
+              std::string error;
+              auto integrator = Integrator::create(settings, s, query, &error);
+              ASSERT_TRUE(integrator) << error;
+              Rng make(uint64_t(compared + 1), 5);
+              for (int i = 0; i < 20; ++i) {
+                Ray r;
+                r.o = glm::vec3(make.next_float() * 4 - 2, make.next_float() * 4 - 2, 2.5f);
+                r.d = glm::normalize(
+                    glm::vec3(make.next_float() - 0.5f, make.next_float() - 0.5f, -1.0f));
+                Rng a(9, uint64_t(i)), b(9, uint64_t(i));
+                const long before = query.intersect_calls + query.occluded_calls;
+                const glm::vec3 own = integrator->radiance(r, a);
+                const long traced = query.intersect_calls + query.occluded_calls - before;
+                const LocalCountingRayQuery<RayQuery> counted(query);
+                const glm::vec3 through = integrator->radiance(r, b, counted);
+                ASSERT_EQ(own, through) << "settings " << compared / 20 << ", ray " << i;
+                ASSERT_EQ(a.next_u32(), b.next_u32()) << "the same random numbers were drawn";
+                ASSERT_EQ(counted.count(), uint64_t(traced));
+                ++compared;
+              }
+            }
+  EXPECT_EQ(compared, 64 * 20);
 }
 
 }  // namespace

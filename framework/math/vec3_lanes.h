@@ -1,0 +1,54 @@
+// Three-float vectors in the lanes of one SSE register, each operation the very one glm does
+// component by component (so the same bits), for the few framework paths every light sample and
+// shadow ray takes: glm's vec3 code runs one component at a time.
+#pragma once
+
+#include <cstdint>
+#include <cstring>
+
+#include <glm/vec3.hpp>
+
+#if defined(__SSE2__) || defined(_M_X64) || (defined(_M_IX86_FP) && _M_IX86_FP >= 2)
+#define PT_VEC3_LANES 1
+#include <emmintrin.h>
+#else
+#define PT_VEC3_LANES 0
+#endif
+
+#if PT_VEC3_LANES
+namespace pt::lanes {
+
+/// x, y, z in lanes 0-2; lane 3 is 0 after a load and carries no meaning.
+using V3 = __m128;
+
+inline V3 load(const glm::vec3& a) { return _mm_setr_ps(a.x, a.y, a.z, 0.0f); }
+inline glm::vec3 to_vec3(V3 v) {
+  alignas(16) float f[4];
+  _mm_store_ps(f, v);
+  return {f[0], f[1], f[2]};
+}
+inline V3 splat(float x) { return _mm_set1_ps(x); }
+inline V3 add(V3 a, V3 b) { return _mm_add_ps(a, b); }
+inline V3 sub(V3 a, V3 b) { return _mm_sub_ps(a, b); }
+inline V3 mul(V3 a, V3 b) { return _mm_mul_ps(a, b); }
+inline V3 div(V3 a, V3 b) { return _mm_div_ps(a, b); }
+inline V3 neg(V3 a) { return _mm_xor_ps(a, _mm_set1_ps(-0.0f)); }
+/// glm::abs: x >= 0 ? x : -x, lane by lane (so -0 stays -0, and a NaN changes sign, as there).
+inline V3 glm_abs(V3 x) {
+  const V3 keep = _mm_cmpge_ps(x, _mm_setzero_ps());
+  return _mm_or_ps(_mm_and_ps(keep, x), _mm_andnot_ps(keep, neg(x)));
+}
+/// glm::dot: the products summed as (x + y) + z.
+inline float dot(V3 a, V3 b) {
+  const V3 p = _mm_mul_ps(a, b);
+  const V3 y = _mm_shuffle_ps(p, p, _MM_SHUFFLE(1, 1, 1, 1));
+  const V3 z = _mm_movehl_ps(p, p);
+  return _mm_cvtss_f32(_mm_add_ss(_mm_add_ss(p, y), z));
+}
+/// Whether lanes 0-2 are all == 0 (glm's v == vec3(0)).
+inline bool all_zero(V3 a) {
+  return (_mm_movemask_ps(_mm_cmpeq_ps(a, _mm_setzero_ps())) & 7) == 7;
+}
+
+}  // namespace pt::lanes
+#endif
