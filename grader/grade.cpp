@@ -634,7 +634,13 @@ bool make_references(const Manifest& manifest, int part, const GradeOptions& opt
       bool failed = false;
       const fs::path run_dir = fs::temp_directory_path() /
                                ("pt-reference-" + std::to_string(::getpid()) + "-" + check.name);
-      fs::create_directories(run_dir);
+      std::error_code made_dir;
+      fs::create_directories(run_dir, made_dir);
+      if (made_dir) {
+        std::cerr << check.name << ": cannot make " << run_dir << ": " << made_dir.message() << "\n";
+        ok = false;
+        continue;
+      }
       for (int k = 0; k < check.reference_runs && !failed; ++k) {
         const fs::path file = run_dir / ("run" + std::to_string(k) + ".exr");
         std::vector<std::string> argv = {options.pathtracer};
@@ -653,15 +659,19 @@ bool make_references(const Manifest& manifest, int part, const GradeOptions& opt
           failed = true;
         }
       }
-      if (!failed && check.reference_runs == 1)
-        fs::copy_file(run_dir / "run0.exr", out, fs::copy_options::overwrite_existing);
-      fs::remove_all(run_dir);
       if (failed) {
+        std::error_code ignored;
+        fs::remove_all(run_dir, ignored);
         ok = false;
         continue;
       }
       try {
-        if (check.reference_runs > 1) write_estimate_exr(out.string(), mean_of_renders(runs));
+        if (check.reference_runs == 1)
+          fs::copy_file(run_dir / "run0.exr", out, fs::copy_options::overwrite_existing);
+        else
+          write_estimate_exr(out.string(), mean_of_renders(runs));
+        std::error_code ignored;
+        fs::remove_all(run_dir, ignored);
         nlohmann::ordered_json made;
         // Paths relative to the project, so the record reads the same on every machine.
         std::string relative_command = "pathtracer " + command_line(check.reference_args) +

@@ -280,6 +280,37 @@ TEST_F(GraderGrade, OnlyTheAssignmentsStoppingRuleIsGraded) {
   EXPECT_THROW(manifest_with("fair", ""), std::runtime_error);
 }
 
+TEST_F(GraderGrade, AReferenceOfSeveralRunsIsTheirMeanAndLeavesNothingBeside) {
+  // reference_runs renders (seeds 50, 51, 52) averaged into the reference; their files, and the
+  // sample-rate images an adaptive render writes beside its output, stay out of reference/.
+  nlohmann::ordered_json m = nlohmann::ordered_json::parse(std::ifstream(options_.manifest_path));
+  // The good render alone (the hang would take a minute).
+  m["parts"][0]["steps"] = nlohmann::ordered_json::array({m["parts"][0]["steps"][0]});
+  auto& render = m["parts"][0]["steps"][0]["renders"][0];
+  render["reference_seed"] = 50;
+  render["reference_runs"] = 3;
+  render["reference"] = "reference/averaged.exr";
+  std::ofstream(options_.manifest_path) << m.dump(2);
+  const Manifest manifest = read_manifest(options_.manifest_path);
+  EXPECT_TRUE(make_references(manifest, 3, options_));
+  const RenderEstimate made = read_estimate_exr((root_ / "reference" / "averaged.exr").string());
+  const RenderEstimate one = read_estimate_exr((root_ / "scenes" / "good.exr").string());
+  EXPECT_EQ(made.mean, one.mean) << "the mean of three copies of one render is that render";
+  EXPECT_EQ(made.count[0], 3.0f * one.count[0]);
+  const Manifest after = read_manifest(options_.manifest_path);
+  const RenderCheck* r = after.find_render("part3.step1.render.good.exr");
+  ASSERT_NE(r, nullptr);
+  EXPECT_EQ(r->checksum, file_checksum((root_ / "reference" / "averaged.exr").string()));
+  const std::string runs =
+      nlohmann::ordered_json::parse(std::ifstream(options_.manifest_path))["parts"][0]["steps"][0]
+                                    ["renders"][0]["made"].value("runs", "");
+  EXPECT_NE(runs.find("seeds 50 to 52"), std::string::npos) << runs;
+  for (const auto& entry : fs::directory_iterator(root_ / "reference"))
+    EXPECT_TRUE(entry.path().filename() == "averaged.exr" || entry.path().filename() == "ref.exr" ||
+                entry.path().filename() == "manifest.json")
+        << entry.path() << " left in reference/";
+}
+
 TEST(GraderTree, APart5BuildOfAnotherStoppingRuleIsNamed) {
   // The stopping rule is compiled into the build (its tests, the renderer's default): grading
   // Part 5 under the other rule would hold the student to the wrong one.
