@@ -1,6 +1,8 @@
 // The controls of Part 5's unbiasedness test: two biased stopping rules on the same heavy-tailed
 // pixel, which the same block t-test at the same significance must catch, or it has no power
 // there. They run no student code (a stub must not score on them), so they are not Part 5's.
+// SOLUTION-ONLY FILE: not in the student handout, since its controls write out Part 5's loop
+// under the course's rule and the convergence test (answers to both steps).
 #include <gtest/gtest.h>
 
 #include <cmath>
