@@ -454,11 +454,9 @@ PartResult grade_part(const Manifest& manifest, int part, const GradeOptions& op
   fs::create_directories(options.out_dir);
   result.rests_on = rests_on_line(manifest, part, options);
   // Part 5's rule is the instructor's choice: the student is told which one is graded.
-  bool has_rule = false;
-  for (const StepSpec& st : spec->steps)
-    for (const auto* list : {&st.renders, &st.other_rule_renders})
-      for (const RenderCheck& r : *list) has_rule = has_rule || !r.stopping_rule.empty();
-  if (has_rule)
+  const std::vector<const RenderCheck*> every_rule = spec->renders_of_every_rule();
+  if (std::any_of(every_rule.begin(), every_rule.end(),
+                  [](const RenderCheck* r) { return !r->stopping_rule.empty(); }))
     result.rests_on += std::string(result.rests_on.empty() ? "" : "\n") + "Part " +
                        std::to_string(part) + " is graded on the " + manifest.stopping_rule +
                        " stopping rule (reference/manifest.json's stopping_rule).";

@@ -7,6 +7,7 @@
 
 #include <boost/crc.hpp>
 
+#include "framework/render/stopping_rule.h"
 #include "framework/text/text_file.h"
 
 namespace pt::grader {
@@ -100,7 +101,7 @@ Manifest read_manifest(const std::string& path) {
       bad(path, "top level", "block_size must be >= 1 and alpha in (0, 1)");
     if (!(m.relative_tolerance >= 0.0) || !(m.absolute_tolerance >= 0.0))
       bad(path, "top level", "relative_tolerance and absolute_tolerance must be >= 0");
-    if (m.stopping_rule != "split" && m.stopping_rule != "course")
+    if (!parse_stopping_rule(m.stopping_rule))
       bad(path, "top level", "stopping_rule must be \"split\" or \"course\" (got \"" +
                                  m.stopping_rule + "\")");
     for (const auto& pj : field<nlohmann::ordered_json>(path, "top level", m.json, "parts")) {
@@ -163,7 +164,7 @@ Manifest read_manifest(const std::string& path) {
             bad(path, rw, "the graded render must use other random numbers than its reference "
                           "(its seed is one of the reference's)");
           r.stopping_rule = optional(rj, "stopping_rule", std::string());
-          if (!r.stopping_rule.empty() && r.stopping_rule != "split" && r.stopping_rule != "course")
+          if (!r.stopping_rule.empty() && !parse_stopping_rule(r.stopping_rule))
             bad(path, rw, "stopping_rule must be \"split\" or \"course\" (got \"" +
                               r.stopping_rule + "\")");
           if (!r.stopping_rule.empty() && r.kind != "adaptive")
