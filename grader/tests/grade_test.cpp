@@ -278,6 +278,12 @@ TEST_F(GraderGrade, OnlyTheAssignmentsStoppingRuleIsGraded) {
     EXPECT_NE(std::string(e.what()).find("one of the reference's"), std::string::npos) << e.what();
   }
   EXPECT_THROW(manifest_with("fair", ""), std::runtime_error);
+  try {
+    manifest_with("course", R"(, "reference_runs": 0)");
+    ADD_FAILURE() << "a reference of no renders was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("reference_runs"), std::string::npos) << e.what();
+  }
 }
 
 TEST_F(GraderGrade, AReferenceOfSeveralRunsIsTheirMeanAndLeavesNothingBeside) {
