@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "framework/math/float_error.h"
+#include "framework/math/vec3_lanes.h"
 
 namespace pt {
 
@@ -18,8 +19,52 @@ Ray spawn_ray(const SurfaceHit& hit, const glm::vec3& w) {
   return r;
 }
 
+#if PT_VEC3_LANES
+namespace {
+using namespace lanes;
+
+// offset_ray_origin (float_error.h) in three lanes, the same operations in the same order.
+[[gnu::always_inline]] inline V3 offset_origin(V3 p, V3 p_error, V3 n, V3 w) {
+  const float d = lanes::dot(glm_abs(n), p_error);
+  V3 offset = mul(splat(d), n);
+  if (lanes::dot(w, n) < 0) offset = neg(offset);
+  const V3 po = add(p, offset);
+  const V3 zero = _mm_setzero_ps();
+  return select(_mm_cmpgt_ps(offset, zero), next_float_up(po),
+                select(_mm_cmplt_ps(offset, zero), next_float_down(po), po));
+}
+
+}  // namespace
+#endif
+
 Ray spawn_ray_to(const SurfaceHit& hit, const glm::vec3& w, const glm::vec3& p,
                  const glm::vec3& p_error, const glm::vec3& n) {
+#if PT_VEC3_LANES
+  // Every shadow ray comes here (the portable version below, in lanes: the same bits).
+  const V3 wv = load(w);
+  const V3 o = offset_origin(load(hit.p), load(hit.p_error), load(hit.ng), wv);
+  V3 target = load(p);
+  if (n != glm::vec3(0.0f)) target = offset_origin(target, load(p_error), load(n), neg(wv));
+  const V3 d = sub(target, o);
+  const float len = std::sqrt(lanes::dot(d, d));
+  Ray r;
+  r.o = to_vec3(o);
+  r.tmin = 0.0f;
+  if (!(len > 0.0f)) {
+    r.d = w;
+    r.tmax = 0.0f;
+    return r;
+  }
+  r.d = to_vec3(div(d, splat(len)));
+  r.tmax = len * (1.0f - gamma(4));
+  return r;
+#else
+  return spawn_ray_to_portable(hit, w, p, p_error, n);
+#endif
+}
+
+Ray spawn_ray_to_portable(const SurfaceHit& hit, const glm::vec3& w, const glm::vec3& p,
+                          const glm::vec3& p_error, const glm::vec3& n) {
   Ray r = spawn_ray(hit, w);
   glm::vec3 target = p;
   if (n != glm::vec3(0.0f)) target = offset_ray_origin(p, p_error, n, -w);

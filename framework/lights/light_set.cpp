@@ -333,12 +333,15 @@ glm::vec3 LightSet::environment_radiance(const glm::vec3& dir) const {
 
 LightSample LightSet::sample(int index, const SurfaceHit& hit, glm::vec2 u) const {
   const SampledLight& l = lights_[index];
-  // Panels and meshes (every light of the course's scenes) first, filling the returned sample in
-  // place: the switch below returns either its sample or an empty one, so its result is copied.
-  if (l.kind != SampledLightKind::panel && l.kind != SampledLightKind::mesh)
-    return sample_other(l, hit, u);
+  // One named sample, returned on every path, so it is built in the caller's place (the
+  // course's lights, panels and meshes, fill it there; a sample copied out was a tenth of
+  // this function's work).
   LightSample ls;
-  if (!sample_triangles(l, hit.p, u, l.kind == SampledLightKind::panel, &ls)) ls = LightSample{};
+  if (l.kind == SampledLightKind::panel || l.kind == SampledLightKind::mesh) {
+    if (!sample_triangles(l, hit.p, u, l.kind == SampledLightKind::panel, &ls)) ls = LightSample{};
+  } else {
+    ls = sample_other(l, hit, u);
+  }
   return ls;
 }
 

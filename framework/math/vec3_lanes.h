@@ -45,6 +45,30 @@ inline float dot(V3 a, V3 b) {
   const V3 z = _mm_movehl_ps(p, p);
   return _mm_cvtss_f32(_mm_add_ss(_mm_add_ss(p, y), z));
 }
+/// Lane by lane, a where mask is set and b elsewhere (SSE2 has no blend).
+inline V3 select(V3 mask, V3 a, V3 b) {
+  return _mm_or_ps(_mm_and_ps(mask, a), _mm_andnot_ps(mask, b));
+}
+/// float_error.h's next_float_up, lane by lane and to the bit: +inf stays, ±0 steps to the
+/// smallest denormal, anything else (NaN included) moves one unit in its bits.
+inline V3 next_float_up(V3 v) {
+  const V3 zero = _mm_setzero_ps();
+  const V3 from = _mm_andnot_ps(_mm_cmpeq_ps(v, zero), v);  // -0 counts as +0
+  const __m128i ge = _mm_castps_si128(_mm_cmpge_ps(from, zero));
+  // ge is -1 where from >= 0: subtracting (ge | 1) adds 1 there and takes 1 elsewhere
+  const __m128i stepped = _mm_sub_epi32(_mm_castps_si128(from), _mm_or_si128(ge, _mm_set1_epi32(1)));
+  return select(_mm_cmpeq_ps(v, _mm_set1_ps(__builtin_inff())), v, _mm_castsi128_ps(stepped));
+}
+/// float_error.h's next_float_down, lane by lane and to the bit.
+inline V3 next_float_down(V3 v) {
+  const V3 zero = _mm_setzero_ps();
+  const V3 is_zero = _mm_cmpeq_ps(v, zero);
+  const V3 from = select(is_zero, _mm_set1_ps(-0.0f), v);  // +0 counts as -0
+  const __m128i gt = _mm_castps_si128(_mm_cmpgt_ps(from, zero));
+  // adding (gt | 1) takes 1 where from > 0 and adds 1 elsewhere
+  const __m128i stepped = _mm_add_epi32(_mm_castps_si128(from), _mm_or_si128(gt, _mm_set1_epi32(1)));
+  return select(_mm_cmpeq_ps(v, _mm_set1_ps(-__builtin_inff())), v, _mm_castsi128_ps(stepped));
+}
 /// Whether lanes 0-2 are all == 0 (glm's v == vec3(0)).
 inline bool all_zero(V3 a) {
   return (_mm_movemask_ps(_mm_cmpeq_ps(a, _mm_setzero_ps())) & 7) == 7;

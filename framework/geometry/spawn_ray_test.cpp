@@ -1,0 +1,124 @@
+// spawn_ray_to: its SIMD path gives its definition's bits, and its rays leave and stop where the
+// error bounds say.
+#include "framework/geometry/spawn_ray.h"
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "framework/math/float_error.h"
+#include "framework/math/vec3_lanes.h"
+#include "framework/sampling/rng.h"
+
+namespace pt {
+namespace {
+
+const float kInf = std::numeric_limits<float>::infinity();
+const float kNaN = std::numeric_limits<float>::quiet_NaN();
+const float kMax = std::numeric_limits<float>::max();
+const float kDenorm = std::numeric_limits<float>::denorm_min();
+
+// Values where the steps to the next float have their special cases.
+const std::vector<float> kSpecial = {0.0f, -0.0f, kDenorm, -kDenorm, 1.0f, -1.0f, kMax, -kMax,
+                                     kInf, -kInf, kNaN, -kNaN, 1e-38f, -1e-38f, 3.5f, -2e10f};
+
+#if PT_VEC3_LANES
+TEST(FrameworkSpawnRay, LaneStepsToTheNextFloatAreTheScalarOnesBitForBit) {
+  for (float a : kSpecial)
+    for (float b : kSpecial)
+      for (float c : kSpecial) {
+        const glm::vec3 v(a, b, c);
+        const glm::vec3 up = lanes::to_vec3(lanes::next_float_up(lanes::load(v)));
+        const glm::vec3 down = lanes::to_vec3(lanes::next_float_down(lanes::load(v)));
+        for (int k = 0; k < 3; ++k) {
+          ASSERT_EQ(float_to_bits(up[k]), float_to_bits(next_float_up(v[k]))) << v[k];
+          ASSERT_EQ(float_to_bits(down[k]), float_to_bits(next_float_down(v[k]))) << v[k];
+        }
+      }
+}
+#endif
+
+void expect_same_ray(const Ray& got, const Ray& want, int i) {
+  for (int k = 0; k < 3; ++k) {
+    ASSERT_EQ(float_to_bits(got.o[k]), float_to_bits(want.o[k])) << "o[" << k << "], case " << i;
+    ASSERT_EQ(float_to_bits(got.d[k]), float_to_bits(want.d[k])) << "d[" << k << "], case " << i;
+  }
+  ASSERT_EQ(float_to_bits(got.tmin), float_to_bits(want.tmin)) << "tmin, case " << i;
+  ASSERT_EQ(float_to_bits(got.tmax), float_to_bits(want.tmax)) << "tmax, case " << i;
+}
+
+// Shading points and targets all around, at zero coordinates of either sign, huge and tiny, on
+// top of each other, with and without a target surface: the ray is the definition's, to the bit.
+TEST(FrameworkSpawnRay, ShadowRaysAreTheirDefinitionBitForBit) {
+  Rng rng(5, 9);
+  auto random_vec = [&](float scale) {
+    return scale * glm::vec3(rng.next_float() * 2 - 1, rng.next_float() * 2 - 1,
+                             rng.next_float() * 2 - 1);
+  };
+  int nonempty = 0;
+  for (int i = 0; i < 50000; ++i) {
+    const float scale = i % 7 == 0 ? 1e5f : i % 5 == 0 ? 1e-5f : 3.0f;
+    SurfaceHit hit;
+    hit.p = random_vec(scale);
+    hit.p_error = glm::abs(random_vec(scale * 1e-6f));
+    hit.ng = glm::normalize(random_vec(1.0f) + glm::vec3(1e-3f));
+    if (i % 3 == 0) hit.ng = glm::vec3(0, 0, i % 2 ? 1.0f : -1.0f);
+    if (i % 4 == 0) hit.p[i % 3] = i % 8 ? 0.0f : -0.0f;
+    glm::vec3 p = random_vec(scale);
+    if (i % 13 == 0) p = hit.p;  // the target on the shading point: an empty interval
+    const glm::vec3 p_error = i % 6 == 0 ? glm::vec3(0.0f) : glm::abs(random_vec(scale * 1e-6f));
+    glm::vec3 n = i % 9 == 0 ? glm::vec3(0.0f) : glm::normalize(random_vec(1.0f) + glm::vec3(1e-3f));
+    if (i % 10 == 0) n = glm::vec3(i % 20 ? -0.0f : 0.0f, 0.0f, 1.0f);
+    const glm::vec3 d = p - hit.p;
+    const float len = glm::length(d);
+    const glm::vec3 w = len > 0.0f ? d / len : glm::vec3(0, 0, 1);
+    const Ray got = spawn_ray_to(hit, w, p, p_error, n);
+    expect_same_ray(got, spawn_ray_to_portable(hit, w, p, p_error, n), i);
+    nonempty += got.tmax > 0.0f;
+  }
+  EXPECT_GT(nonempty, 40000) << "most cases should have something between the two points";
+}
+
+TEST(FrameworkSpawnRay, NonFiniteInputsGiveTheDefinitionsBits) {
+  int i = 0;
+  for (float a : kSpecial)
+    for (float b : kSpecial) {
+      SurfaceHit hit;
+      hit.p = glm::vec3(a, 1.0f, b);
+      hit.p_error = glm::vec3(1e-7f);
+      hit.ng = glm::vec3(0.0f, 1.0f, 0.0f);
+      const glm::vec3 p(b, 2.0f, a), n(0.0f, -1.0f, 0.0f), w(0.0f, 1.0f, 0.0f);
+      const Ray got = spawn_ray_to(hit, w, p, glm::vec3(1e-7f), n);
+      const Ray want = spawn_ray_to_portable(hit, w, p, glm::vec3(1e-7f), n);
+      // NaN's payload is no answer; the rest is compared to the bit.
+      for (int k = 0; k < 3; ++k) {
+        if (std::isnan(want.o[k])) ASSERT_TRUE(std::isnan(got.o[k])) << i;
+        else ASSERT_EQ(float_to_bits(got.o[k]), float_to_bits(want.o[k])) << i;
+        if (std::isnan(want.d[k])) ASSERT_TRUE(std::isnan(got.d[k])) << i;
+        else ASSERT_EQ(float_to_bits(got.d[k]), float_to_bits(want.d[k])) << i;
+      }
+      if (std::isnan(want.tmax)) ASSERT_TRUE(std::isnan(got.tmax)) << i;
+      else ASSERT_EQ(float_to_bits(got.tmax), float_to_bits(want.tmax)) << i;
+      ++i;
+    }
+}
+
+// What the offsets are for: the origin is outside the shading point's error box on the side the
+// ray leaves to, and the end stops short of the target's box on the side the ray comes from.
+TEST(FrameworkSpawnRay, TheRayStartsAndEndsOutsideBothErrorBoxes) {
+  SurfaceHit hit;
+  hit.p = glm::vec3(0.5f, 0.25f, 0.0f);
+  hit.p_error = glm::vec3(1e-6f, 1e-6f, 1e-6f);
+  hit.ng = glm::vec3(0.0f, 0.0f, 1.0f);
+  const glm::vec3 p(0.4f, 0.3f, 1.0f), p_error(1e-6f), n(0.0f, 0.0f, -1.0f);
+  const glm::vec3 w = glm::normalize(p - hit.p);
+  const Ray r = spawn_ray_to(hit, w, p, p_error, n);
+  EXPECT_GT(r.o.z, hit.p.z + hit.p_error.z);
+  EXPECT_LT(r.at(r.tmax).z, p.z - p_error.z);
+  EXPECT_GT(r.tmax, 0.99f);
+}
+
+}  // namespace
+}  // namespace pt
