@@ -6,9 +6,10 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <optional>
+#include <new>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -658,7 +659,10 @@ bool WideBvh::occluded(const Ray& ray) const {
   if (nodes_.empty() || !traceable(ray)) return false;
   // The shear is made at the first leaf the ray reaches: most shadow rays of a room reach none
   // (they cross only the root's empty space), and it was a fifth of such a ray's work.
-  std::optional<ShearedRay4> sheared4;
+  // (Raw storage, not std::optional, which zeroed the whole 448-byte payload on every call.)
+  alignas(ShearedRay4) unsigned char shear_storage[sizeof(ShearedRay4)];
+  const ShearedRay4* sheared4 = nullptr;
+  static_assert(std::is_trivially_destructible_v<ShearedRay4>, "left in its storage unended");
   const Box4Ray box_ray(ray);
   // Any occluder will do: no distances kept, no sorting.
   StackEntry stack[kStackSize];
@@ -667,7 +671,7 @@ bool WideBvh::occluded(const Ray& ray) const {
   while (top > 0) {
     const StackEntry e = stack[--top];
     if (e.count > 0) {
-      if (!sheared4) sheared4.emplace(ray);
+      if (!sheared4) sheared4 = new (shear_storage) ShearedRay4(ray);
       const ShearedRay& sheared = sheared4->r;
       // Whether a lane a test of packets from `first_packet` handed back occludes the ray.
       auto retest_occludes = [&](unsigned retest, uint32_t first_packet) {

@@ -1,6 +1,7 @@
 #include "framework/geometry/spawn_ray.h"
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include <glm/geometric.hpp>
@@ -47,16 +48,21 @@ Ray spawn_ray_to(const SurfaceHit& hit, const glm::vec3& w, const glm::vec3& p,
   if (n != glm::vec3(0.0f)) target = offset_origin(target, load(p_error), load(n), neg(wv));
   const V3 d = sub(target, o);
   const float len = std::sqrt(lanes::dot(d, d));
+  const bool empty = !(len > 0.0f);
+  const V3 dir = empty ? wv : div(d, splat(len));
+  const float tmax = empty ? 0.0f : len * (1.0f - gamma(4));
+  // Written as the two 16-byte halves the ray queries read it by (traceable), so that each of
+  // their loads is forwarded from one store instead of waiting for several to reach the cache.
+  const V3 oz_dx = _mm_shuffle_ps(o, dir, _MM_SHUFFLE(0, 0, 2, 2));
+  const V3 lo = _mm_shuffle_ps(o, oz_dx, _MM_SHUFFLE(2, 0, 1, 0));  // o.x o.y o.z d.x
+  const V3 hi = _mm_shuffle_ps(dir, _mm_setr_ps(0.0f, tmax, 0.0f, 0.0f),
+                               _MM_SHUFFLE(1, 0, 2, 1));  // d.y d.z tmin tmax
+  static_assert(sizeof(Ray) == 8 * sizeof(float), "a ray is o, d, tmin, tmax side by side");
   Ray r;
-  r.o = to_vec3(o);
-  r.tmin = 0.0f;
-  if (!(len > 0.0f)) {
-    r.d = w;
-    r.tmax = 0.0f;
-    return r;
-  }
-  r.d = to_vec3(div(d, splat(len)));
-  r.tmax = len * (1.0f - gamma(4));
+  alignas(16) float f[8];
+  _mm_store_ps(f, lo);
+  _mm_store_ps(f + 4, hi);
+  std::memcpy(&r, f, sizeof r);
   return r;
 #else
   return spawn_ray_to_portable(hit, w, p, p_error, n);
