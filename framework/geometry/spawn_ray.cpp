@@ -11,15 +11,6 @@
 
 namespace pt {
 
-Ray spawn_ray(const SurfaceHit& hit, const glm::vec3& w) {
-  Ray r;
-  r.o = offset_ray_origin(hit.p, hit.p_error, hit.ng, w);
-  r.d = w;
-  r.tmin = 0.0f;
-  r.tmax = std::numeric_limits<float>::infinity();
-  return r;
-}
-
 #if PT_VEC3_LANES
 namespace {
 using namespace lanes;
@@ -35,8 +26,45 @@ using namespace lanes;
                 select(_mm_cmplt_ps(offset, zero), next_float_down(po), po));
 }
 
+// The ray (o, d, 0, tmax), written as the two 16-byte halves the ray queries read it by
+// (traceable in the wide tree), so that each of their loads is forwarded from one store instead
+// of waiting for several to reach the cache.
+[[gnu::always_inline]] inline Ray make_ray(V3 o, V3 d, float tmax) {
+  static_assert(sizeof(Ray) == 8 * sizeof(float), "a ray is o, d, tmin, tmax side by side");
+  const V3 oz_dx = _mm_shuffle_ps(o, d, _MM_SHUFFLE(0, 0, 2, 2));
+  const V3 lo = _mm_shuffle_ps(o, oz_dx, _MM_SHUFFLE(2, 0, 1, 0));  // o.x o.y o.z d.x
+  const V3 hi = _mm_shuffle_ps(d, _mm_setr_ps(0.0f, tmax, 0.0f, 0.0f),
+                               _MM_SHUFFLE(1, 0, 2, 1));  // d.y d.z tmin tmax
+  alignas(16) float f[8];
+  _mm_store_ps(f, lo);
+  _mm_store_ps(f + 4, hi);
+  Ray r;
+  std::memcpy(&r, f, sizeof r);
+  return r;
+}
+
 }  // namespace
 #endif
+
+Ray spawn_ray(const SurfaceHit& hit, const glm::vec3& w) {
+#if PT_VEC3_LANES
+  // Every bounce comes here: spawn_ray_portable's operations in lanes, the same bits.
+  const V3 wv = load(w);
+  return make_ray(offset_origin(load(hit.p), load(hit.p_error), load(hit.ng), wv), wv,
+                  std::numeric_limits<float>::infinity());
+#else
+  return spawn_ray_portable(hit, w);
+#endif
+}
+
+Ray spawn_ray_portable(const SurfaceHit& hit, const glm::vec3& w) {
+  Ray r;
+  r.o = offset_ray_origin(hit.p, hit.p_error, hit.ng, w);
+  r.d = w;
+  r.tmin = 0.0f;
+  r.tmax = std::numeric_limits<float>::infinity();
+  return r;
+}
 
 Ray spawn_ray_to(const SurfaceHit& hit, const glm::vec3& w, const glm::vec3& p,
                  const glm::vec3& p_error, const glm::vec3& n) {
@@ -50,20 +78,7 @@ Ray spawn_ray_to(const SurfaceHit& hit, const glm::vec3& w, const glm::vec3& p,
   const float len = std::sqrt(lanes::dot(d, d));
   const bool empty = !(len > 0.0f);
   const V3 dir = empty ? wv : div(d, splat(len));
-  const float tmax = empty ? 0.0f : len * (1.0f - gamma(4));
-  // Written as the two 16-byte halves the ray queries read it by (traceable), so that each of
-  // their loads is forwarded from one store instead of waiting for several to reach the cache.
-  const V3 oz_dx = _mm_shuffle_ps(o, dir, _MM_SHUFFLE(0, 0, 2, 2));
-  const V3 lo = _mm_shuffle_ps(o, oz_dx, _MM_SHUFFLE(2, 0, 1, 0));  // o.x o.y o.z d.x
-  const V3 hi = _mm_shuffle_ps(dir, _mm_setr_ps(0.0f, tmax, 0.0f, 0.0f),
-                               _MM_SHUFFLE(1, 0, 2, 1));  // d.y d.z tmin tmax
-  static_assert(sizeof(Ray) == 8 * sizeof(float), "a ray is o, d, tmin, tmax side by side");
-  Ray r;
-  alignas(16) float f[8];
-  _mm_store_ps(f, lo);
-  _mm_store_ps(f + 4, hi);
-  std::memcpy(&r, f, sizeof r);
-  return r;
+  return make_ray(o, dir, empty ? 0.0f : len * (1.0f - gamma(4)));
 #else
   return spawn_ray_to_portable(hit, w, p, p_error, n);
 #endif
@@ -71,7 +86,7 @@ Ray spawn_ray_to(const SurfaceHit& hit, const glm::vec3& w, const glm::vec3& p,
 
 Ray spawn_ray_to_portable(const SurfaceHit& hit, const glm::vec3& w, const glm::vec3& p,
                           const glm::vec3& p_error, const glm::vec3& n) {
-  Ray r = spawn_ray(hit, w);
+  Ray r = spawn_ray_portable(hit, w);
   glm::vec3 target = p;
   if (n != glm::vec3(0.0f)) target = offset_ray_origin(p, p_error, n, -w);
   glm::vec3 d = target - r.o;

@@ -21,6 +21,10 @@ Ray spawn_ray(const SurfaceHit& hit, const glm::vec3& w);
 Ray spawn_ray_to(const SurfaceHit& hit, const glm::vec3& w, const glm::vec3& p,
                  const glm::vec3& p_error, const glm::vec3& n);
 
+/// spawn_ray written one glm operation at a time: its definition, as spawn_ray_to_portable is
+/// spawn_ray_to's.
+Ray spawn_ray_portable(const SurfaceHit& hit, const glm::vec3& w);
+
 /// spawn_ray_to written one glm operation at a time: its definition. spawn_ray_to does the same
 /// operations in SIMD lanes where the build has them (every shadow ray comes through it) and
 /// must give these bits; the tests hold it to that.

@@ -50,8 +50,9 @@ void expect_same_ray(const Ray& got, const Ray& want, int i) {
 }
 
 // Shading points and targets all around, at zero coordinates of either sign, huge and tiny, on
-// top of each other, with and without a target surface: the ray is the definition's, to the bit.
-TEST(FrameworkSpawnRay, ShadowRaysAreTheirDefinitionBitForBit) {
+// top of each other, with and without a target surface: the shadow ray and the bounce ray are
+// their definitions', to the bit.
+TEST(FrameworkSpawnRay, ShadowAndBounceRaysAreTheirDefinitionBitForBit) {
   Rng rng(5, 9);
   auto random_vec = [&](float scale) {
     return scale * glm::vec3(rng.next_float() * 2 - 1, rng.next_float() * 2 - 1,
@@ -77,6 +78,8 @@ TEST(FrameworkSpawnRay, ShadowRaysAreTheirDefinitionBitForBit) {
     const Ray got = spawn_ray_to(hit, w, p, p_error, n);
     expect_same_ray(got, spawn_ray_to_portable(hit, w, p, p_error, n), i);
     nonempty += got.tmax > 0.0f;
+    // and the bounce ray in the same direction
+    expect_same_ray(spawn_ray(hit, w), spawn_ray_portable(hit, w), i);
   }
   EXPECT_GT(nonempty, 40000) << "most cases should have something between the two points";
 }
@@ -90,8 +93,9 @@ TEST(FrameworkSpawnRay, NonFiniteInputsGiveTheDefinitionsBits) {
       hit.p_error = glm::vec3(1e-7f);
       hit.ng = glm::vec3(0.0f, 1.0f, 0.0f);
       const glm::vec3 p(b, 2.0f, a), n(0.0f, -1.0f, 0.0f), w(0.0f, 1.0f, 0.0f);
-      const Ray got = spawn_ray_to(hit, w, p, glm::vec3(1e-7f), n);
-      const Ray want = spawn_ray_to_portable(hit, w, p, glm::vec3(1e-7f), n);
+      const Ray got = i % 2 ? spawn_ray_to(hit, w, p, glm::vec3(1e-7f), n) : spawn_ray(hit, w);
+      const Ray want = i % 2 ? spawn_ray_to_portable(hit, w, p, glm::vec3(1e-7f), n)
+                             : spawn_ray_portable(hit, w);
       // NaN's payload is no answer; the rest is compared to the bit.
       for (int k = 0; k < 3; ++k) {
         if (std::isnan(want.o[k])) ASSERT_TRUE(std::isnan(got.o[k])) << i;
