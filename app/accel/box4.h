@@ -39,11 +39,17 @@ struct alignas(16) Box4 {
 struct Box4Ray {
 #if PT_ACCEL_AVX
   __m256 o8[3], inv_d8[3];
-#endif
-#if PT_ACCEL_SSE
-  __m128 o[3], inv_d[3];
+  // The four-lane test reads the lower halves of the eight-lane values: no second copy to make.
+  __m128 o(int a) const { return _mm256_castps256_ps128(o8[a]); }
+  __m128 inv_d(int a) const { return _mm256_castps256_ps128(inv_d8[a]); }
+#elif PT_ACCEL_SSE
+  __m128 o4[3], inv_d4[3];
+  __m128 o(int a) const { return o4[a]; }
+  __m128 inv_d(int a) const { return inv_d4[a]; }
 #else
-  float o[3][4], inv_d[3][4];
+  float o4[3][4], inv_d4[3][4];
+  float o(int a, int k) const { return o4[a][k]; }
+  float inv_d(int a, int k) const { return inv_d4[a][k]; }
 #endif
   int near_plane[3], far_plane[3];
   float tmin = 0.0f;
@@ -64,12 +70,11 @@ struct Box4Ray {
 #if PT_ACCEL_AVX
       o8[a] = _mm256_set1_ps(ray.o[a]);
       inv_d8[a] = _mm256_set1_ps(inv);
-#endif
-#if PT_ACCEL_SSE
-      o[a] = _mm_set1_ps(ray.o[a]);
-      inv_d[a] = _mm_set1_ps(inv);
+#elif PT_ACCEL_SSE
+      o4[a] = _mm_set1_ps(ray.o[a]);
+      inv_d4[a] = _mm_set1_ps(inv);
 #else
-      for (int k = 0; k < 4; ++k) o[a][k] = ray.o[a], inv_d[a][k] = inv;
+      for (int k = 0; k < 4; ++k) o4[a][k] = ray.o[a], inv_d4[a][k] = inv;
 #endif
       near_plane[a] = std::signbit(inv) ? 3 + a : a;
       far_plane[a] = std::signbit(inv) ? a : 3 + a;
@@ -116,10 +121,10 @@ inline unsigned intersect_box4(const Box4& box, const Box4Ray& ray, float tmax, 
   // _mm_max_ps(x, acc) returns acc when x is NaN: a slab the ray runs inside of narrows nothing.
   __m128 tn = _mm_set1_ps(-INFINITY), tf = _mm_set1_ps(INFINITY);
   for (int a = 0; a < 3; ++a) {
-    const __m128 n = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(box.bounds[ray.near_plane[a]]), ray.o[a]),
-                                ray.inv_d[a]);
-    const __m128 f = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(box.bounds[ray.far_plane[a]]), ray.o[a]),
-                                ray.inv_d[a]);
+    const __m128 n = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(box.bounds[ray.near_plane[a]]), ray.o(a)),
+                                ray.inv_d(a));
+    const __m128 f = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(box.bounds[ray.far_plane[a]]), ray.o(a)),
+                                ray.inv_d(a));
     tn = _mm_max_ps(n, tn);
     tf = _mm_min_ps(f, tf);
   }
@@ -135,8 +140,8 @@ inline unsigned intersect_box4(const Box4& box, const Box4Ray& ray, float tmax, 
   for (int k = 0; k < 4; ++k) {
     float tn = -INFINITY, tf = INFINITY;
     for (int a = 0; a < 3; ++a) {
-      const float n = (box.bounds[ray.near_plane[a]][k] - ray.o[a][k]) * ray.inv_d[a][k];
-      const float f = (box.bounds[ray.far_plane[a]][k] - ray.o[a][k]) * ray.inv_d[a][k];
+      const float n = (box.bounds[ray.near_plane[a]][k] - ray.o(a, k)) * ray.inv_d(a, k);
+      const float f = (box.bounds[ray.far_plane[a]][k] - ray.o(a, k)) * ray.inv_d(a, k);
       tn = n > tn ? n : tn;
       tf = f < tf ? f : tf;
     }

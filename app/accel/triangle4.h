@@ -36,11 +36,10 @@ struct ShearedLanes8 {
 
 /// A sheared ray with its per-ray values in every lane.
 struct ShearedRay4 {
-#if PT_ACCEL_SSE
-  ShearedLanes4 v4;
-#endif
 #if PT_ACCEL_AVX
-  ShearedLanes8 v8;
+  ShearedLanes8 v8;  ///< the four-lane tests read its lower halves (lanes_of): no second copy
+#elif PT_ACCEL_SSE
+  ShearedLanes4 v4;
 #endif
   ShearedRay r;
   /// Whether triangle4_intersect may finish Part 1's test in SIMD lanes: with a shear of finite
@@ -55,15 +54,14 @@ struct ShearedRay4 {
  private:
   void broadcast() {
     finite_shear = std::isfinite(r.sx) && std::isfinite(r.sy) && std::isfinite(r.sz);
-#if PT_ACCEL_SSE
-    for (int a = 0; a < 3; ++a) v4.o[a] = _mm_set1_ps(r.o[a]);
-    v4.sx = _mm_set1_ps(r.sx), v4.sy = _mm_set1_ps(r.sy), v4.sz = _mm_set1_ps(r.sz);
-    v4.tmin = _mm_set1_ps(r.tmin);
-#endif
 #if PT_ACCEL_AVX
     for (int a = 0; a < 3; ++a) v8.o[a] = _mm256_set1_ps(r.o[a]);
     v8.sx = _mm256_set1_ps(r.sx), v8.sy = _mm256_set1_ps(r.sy), v8.sz = _mm256_set1_ps(r.sz);
     v8.tmin = _mm256_set1_ps(r.tmin);
+#elif PT_ACCEL_SSE
+    for (int a = 0; a < 3; ++a) v4.o[a] = _mm_set1_ps(r.o[a]);
+    v4.sx = _mm_set1_ps(r.sx), v4.sy = _mm_set1_ps(r.sy), v4.sz = _mm_set1_ps(r.sz);
+    v4.tmin = _mm_set1_ps(r.tmin);
 #endif
   }
 };
@@ -94,7 +92,17 @@ inline void store(float* p, __m128 a) { _mm_store_ps(p, a); }
 template <class V> V splat(float x);
 template <> inline __m128 splat<__m128>(float x) { return _mm_set1_ps(x); }
 inline __m128 all_ones(__m128) { return _mm_castsi128_ps(_mm_set1_epi32(-1)); }
+#if PT_ACCEL_AVX
+inline ShearedLanes4 lanes_of(const ShearedRay4& r, __m128) {
+  const ShearedLanes8& v = r.v8;
+  return {{_mm256_castps256_ps128(v.o[0]), _mm256_castps256_ps128(v.o[1]),
+           _mm256_castps256_ps128(v.o[2])},
+          _mm256_castps256_ps128(v.sx), _mm256_castps256_ps128(v.sy),
+          _mm256_castps256_ps128(v.sz), _mm256_castps256_ps128(v.tmin)};
+}
+#else
 inline const ShearedLanes4& lanes_of(const ShearedRay4& r, __m128) { return r.v4; }
+#endif
 #if PT_ACCEL_AVX
 inline __m256 add(__m256 a, __m256 b) { return _mm256_add_ps(a, b); }
 inline __m256 sub(__m256 a, __m256 b) { return _mm256_sub_ps(a, b); }
