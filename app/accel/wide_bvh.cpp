@@ -252,17 +252,18 @@ Slot make_slot(const std::vector<BvhNode>& bin, uint32_t index) {
 }  // namespace
 
 int WideBvh::regroup_leaf(uint32_t first, uint32_t count, int max_groups, uint32_t* sizes) {
+  // The arrays below hold a packed leaf: a longer run is left as it is.
+  if (count < 2 || count > kPackedLeafEntries) return 1;
   // Start from one group an entry and join the pair that pays most, while a pair pays.
   struct Group {
     Bounds3 box;
     uint32_t count;
-    uint32_t lowest;  ///< its first entry's place in the leaf, to keep the leaf's order
   };
   Group groups[kPackedLeafEntries];
   uint32_t member[kPackedLeafEntries];  ///< each entry's group
   int n = int(count);
   for (uint32_t e = 0; e < count; ++e) {
-    groups[e] = {scene_.primitive_bounds(order_[first + e]), 1, e};
+    groups[e] = {scene_.primitive_bounds(order_[first + e]), 1};
     member[e] = e;
   }
   for (;;) {
@@ -282,7 +283,6 @@ int WideBvh::regroup_leaf(uint32_t first, uint32_t count, int max_groups, uint32
     if (best_i < 0) break;
     groups[best_i].box.grow(groups[best_j].box);
     groups[best_i].count += groups[best_j].count;
-    groups[best_i].lowest = std::min(groups[best_i].lowest, groups[best_j].lowest);
     for (uint32_t e = 0; e < count; ++e) {
       if (member[e] == uint32_t(best_j)) member[e] = uint32_t(best_i);
       if (member[e] == uint32_t(n - 1)) member[e] = uint32_t(best_j);
@@ -291,16 +291,19 @@ int WideBvh::regroup_leaf(uint32_t first, uint32_t count, int max_groups, uint32
     --n;
   }
   if (n < 2 || n > max_groups) return 1;
-  // The groups in the order of their first entries, each group's entries in the leaf's order.
-  int rank[kPackedLeafEntries];
-  for (int g = 0; g < n; ++g) rank[g] = g;
-  std::sort(rank, rank + n, [&](int a, int b) { return groups[a].lowest < groups[b].lowest; });
+  // The groups in the order of their first entries (met walking the leaf), each group's entries
+  // in the leaf's order.
+  bool placed[kPackedLeafEntries] = {};
   uint32_t reordered[kPackedLeafEntries];
   uint32_t out = 0;
-  for (int r = 0; r < n; ++r) {
-    for (uint32_t e = 0; e < count; ++e)
-      if (member[e] == uint32_t(rank[r])) reordered[out++] = order_[first + e];
-    sizes[r] = groups[rank[r]].count;
+  int r = 0;
+  for (uint32_t e = 0; e < count; ++e) {
+    const uint32_t g = member[e];
+    if (placed[g]) continue;
+    placed[g] = true;
+    for (uint32_t k = e; k < count; ++k)
+      if (member[k] == g) reordered[out++] = order_[first + k];
+    sizes[r++] = groups[g].count;
   }
   std::copy(reordered, reordered + count, order_.begin() + first);
   return n;
