@@ -431,6 +431,7 @@ struct WideBvh::Nearest {
   uint32_t prim = UINT32_MAX;
   float t = 0.0f;
   float b0 = 0.0f, b1 = 0.0f, b2 = 0.0f;
+  uint32_t packet = 0, lane = 0;  ///< where the best triangle's corners and vertices are
   bool found() const { return prim != UINT32_MAX; }
   bool beaten_by(float t_new, uint32_t prim_new) const {
     return !found() || t_new < t || (t_new == t && prim_new < prim);
@@ -556,13 +557,14 @@ void WideBvh::find_nearest(const Ray& ray, Nearest* best) const {
               th.t = t_sphere;
             }
             if (kPrefetchShading && prim < scene_.triangles.size()) {
+              // The corners are in this packet; the record (for the material) and the normals
+              // are all the SurfaceHit reads elsewhere.
               __builtin_prefetch(&scene_.triangles[prim]);
-              for (int v = 0; v < 3; ++v) {
-                __builtin_prefetch(&scene_.positions[info.vertex[v][lane]]);
-                if (!scene_.normals.empty()) __builtin_prefetch(&scene_.normals[info.vertex[v][lane]]);
-              }
+              if (!scene_.normals.empty())
+                for (int v = 0; v < 3; ++v) __builtin_prefetch(&scene_.normals[info.vertex[v][lane]]);
             }
             best->prim = prim;
+            best->packet = p, best->lane = lane;
             best->t = th.t;
             best->b0 = th.b0, best->b1 = th.b1, best->b2 = th.b2;
             cull = std::min(ray.tmax, th.t + std::max(std::abs(th.t) * (kHitDistanceSlack - 1.0f),
@@ -636,8 +638,14 @@ bool WideBvh::intersect(const Ray& ray, SurfaceHit* hit) const {
   // The winner's full hit, made as brute force makes it: a triangle's from the t and barycentrics
   // its test reported (bit-identical to Part 1's, so no second test), a sphere's by Part 1.
   if (scene_.is_triangle(best.prim)) {
+    // From the corners and vertex indices of the packet the test just read (the scene's own
+    // values, copied), so nothing waits on the triangle's record to find them.
+    const LeafPacket& packet = packets_[best.packet];
+    const Corners c = corners(best.packet, best.lane);
+    const uint32_t vertex[3] = {packet.vertex[0][best.lane], packet.vertex[1][best.lane],
+                                packet.vertex[2][best.lane]};
     if (triangle_surface_hit(scene_, best.prim, TriangleHit{best.t, best.b0, best.b1, best.b2},
-                             hit))
+                             c.p0, c.p1, c.p2, vertex, hit))
       return true;
   } else if (intersect_primitive(scene_, best.prim, ray, hit) && hit->t == best.t) {
     return true;

@@ -22,10 +22,13 @@ bool all_finite(const glm::vec3& v) {
 bool triangle_surface_hit(const Scene& scene, uint32_t primitive, const TriangleHit& th,
                           SurfaceHit* hit) {
   const Triangle& tri = scene.triangles[primitive];
-  const glm::vec3& p0 = scene.positions[tri.v[0]];
-  const glm::vec3& p1 = scene.positions[tri.v[1]];
-  const glm::vec3& p2 = scene.positions[tri.v[2]];
+  return triangle_surface_hit(scene, primitive, th, scene.positions[tri.v[0]],
+                              scene.positions[tri.v[1]], scene.positions[tri.v[2]], tri.v, hit);
+}
 
+bool triangle_surface_hit(const Scene& scene, uint32_t primitive, const TriangleHit& th,
+                          const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2,
+                          const uint32_t vertex[3], SurfaceHit* hit) {
   // A triangle whose corners are collinear in float has no normal to shade or offset along: it
   // is treated as the zero-area sliver it is.
   const glm::vec3 cross = glm::cross(p1 - p0, p2 - p0);
@@ -41,8 +44,8 @@ bool triangle_surface_hit(const Scene& scene, uint32_t primitive, const Triangle
 
   glm::vec3 n = ng;
   if (!scene.normals.empty()) {
-    const glm::vec3 ns = interpolate_normal(th, scene.normals[tri.v[0]], scene.normals[tri.v[1]],
-                                            scene.normals[tri.v[2]]);
+    const glm::vec3 ns = interpolate_normal(th, scene.normals[vertex[0]], scene.normals[vertex[1]],
+                                            scene.normals[vertex[2]]);
     // Corner normals that cancel out (or a student's NaN) leave the geometric normal in charge.
     if (all_finite(ns) && glm::dot(ns, ns) > 0.0f) n = ns;
   }
@@ -53,7 +56,7 @@ bool triangle_surface_hit(const Scene& scene, uint32_t primitive, const Triangle
   hit->ng = ng;
   hit->n = n;
   hit->primitive = primitive;
-  hit->material = tri.material;
+  hit->material = scene.triangles[primitive].material;
   return true;
 }
 

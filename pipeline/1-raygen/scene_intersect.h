@@ -21,6 +21,13 @@ bool intersect_primitive(const Scene& scene, uint32_t primitive, const Ray& ray,
 bool triangle_surface_hit(const Scene& scene, uint32_t primitive, const TriangleHit& th,
                           SurfaceHit* hit);
 
+/// The same SurfaceHit, bit for bit, for a caller that already holds the triangle's corners and
+/// vertex indices (a wide tree's leaf packet, just read by its test): only the normals and the
+/// material are loaded, and nothing waits on the triangle's record for where its corners are.
+bool triangle_surface_hit(const Scene& scene, uint32_t primitive, const TriangleHit& th,
+                          const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2,
+                          const uint32_t vertex[3], SurfaceHit* hit);
+
 /// Whether primitive `primitive` blocks `ray` somewhere in (tmin, tmax).
 bool primitive_occludes(const Scene& scene, uint32_t primitive, const Ray& ray);
 
