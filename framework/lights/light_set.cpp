@@ -334,8 +334,8 @@ glm::vec3 LightSet::environment_radiance(const glm::vec3& dir) const {
 LightSample LightSet::sample(int index, const SurfaceHit& hit, glm::vec2 u) const {
   const SampledLight& l = lights_[index];
   // One named sample, returned on every path, so it is built in the caller's place (the
-  // course's lights, panels and meshes, fill it there; a sample copied out was a tenth of
-  // this function's work).
+  // course's lights, panels and meshes, fill it there; copying a sample out was a tenth of
+  // this function's instructions).
   LightSample ls;
   if (l.kind == SampledLightKind::panel || l.kind == SampledLightKind::mesh) {
     if (!sample_triangles(l, hit.p, u, l.kind == SampledLightKind::panel, &ls)) ls = LightSample{};
