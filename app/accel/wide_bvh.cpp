@@ -372,7 +372,7 @@ uint32_t WideBvh::collapse(const std::vector<BvhNode>& bin, uint32_t index, uint
   // spheres go apart), and the groups take a slot each where there is room.
   for (int k = 0; k < n; ++k) {
     const Slot leaf = slots[k];
-    if (leaf.count < 2 || leaf.count > WideBvh::kPackedLeafEntries || n == kWidth) continue;
+    if (n == kWidth) break;  // no slot left (regroup_leaf passes over a run it cannot regroup)
     const int groups = regroup_leaf(leaf.first, leaf.count, kWidth - n + 1, group_sizes);
     if (groups < 2) continue;
     const int extra = groups - 1;
