@@ -8,17 +8,11 @@
 
 #include "framework/math/float_error.h"
 #include "framework/math/ray.h"
+#include "framework/math/sse.h"
 
-#if defined(__SSE2__) || defined(_M_X64) || (defined(_M_IX86_FP) && _M_IX86_FP >= 2)
-#define PT_ACCEL_SSE 1
-#include <emmintrin.h>
-#include <xmmintrin.h>
-#else
-#define PT_ACCEL_SSE 0
-#endif
 // Eight lanes at once where the build targets AVX (PT_ISA in the top CMakeLists): the same
 // operations on twice the lanes, so every answer is the four-lane one.
-#if PT_ACCEL_SSE && defined(__AVX__)
+#if PT_SSE2 && defined(__AVX__)
 #define PT_ACCEL_AVX 1
 #include <immintrin.h>
 #else
@@ -42,7 +36,7 @@ struct Box4Ray {
   // The four-lane test reads the lower halves of the eight-lane values: no second copy to make.
   __m128 o(int a) const { return _mm256_castps256_ps128(o8[a]); }
   __m128 inv_d(int a) const { return _mm256_castps256_ps128(inv_d8[a]); }
-#elif PT_ACCEL_SSE
+#elif PT_SSE2
   __m128 o4[3], inv_d4[3];
   __m128 o(int a) const { return o4[a]; }
   __m128 inv_d(int a) const { return inv_d4[a]; }
@@ -55,14 +49,14 @@ struct Box4Ray {
   float tmin = 0.0f;
 
   explicit Box4Ray(const Ray& ray) : tmin(ray.tmin) {
-#if PT_ACCEL_SSE
+#if PT_SSE2
     // The three reciprocals in one division of four lanes (each lane rounded as a scalar
     // division would be): three divisions in a row were on every ray's way to its first box.
     alignas(16) float inverse[4];
     _mm_store_ps(inverse, _mm_div_ps(_mm_set1_ps(1.0f), _mm_setr_ps(ray.d.x, ray.d.y, ray.d.z, 1.0f)));
 #endif
     for (int a = 0; a < 3; ++a) {
-#if PT_ACCEL_SSE
+#if PT_SSE2
       const float inv = inverse[a];
 #else
       const float inv = 1.0f / ray.d[a];
@@ -70,7 +64,7 @@ struct Box4Ray {
 #if PT_ACCEL_AVX
       o8[a] = _mm256_set1_ps(ray.o[a]);
       inv_d8[a] = _mm256_set1_ps(inv);
-#elif PT_ACCEL_SSE
+#elif PT_SSE2
       o4[a] = _mm_set1_ps(ray.o[a]);
       inv_d4[a] = _mm_set1_ps(inv);
 #else
@@ -87,7 +81,7 @@ struct Box4Ray {
 /// not zero, and no NaN in the interval. Every query of the wide tree starts here, and the scalar
 /// form's eight tests and branches were a tenth of a shadow ray in a small scene.
 inline bool traceable(const Ray& ray) {
-#if PT_ACCEL_SSE
+#if PT_SSE2
   static_assert(sizeof(Ray) == 8 * sizeof(float), "a ray is o, d, tmin, tmax side by side");
   const float* f = &ray.o.x;
   const __m128 a = _mm_loadu_ps(f);      // o.x o.y o.z d.x
@@ -117,7 +111,7 @@ inline bool traceable(const Ray& ray) {
 inline unsigned intersect_box4(const Box4& box, const Box4Ray& ray, float tmax, float t_entry[4]) {
   constexpr float kFarScale = 1.0f + 2.0f * gamma(3);
   constexpr float kNearScale = 1.0f - 2.0f * gamma(3);
-#if PT_ACCEL_SSE
+#if PT_SSE2
   // _mm_max_ps(x, acc) returns acc when x is NaN: a slab the ray runs inside of narrows nothing.
   __m128 tn = _mm_set1_ps(-INFINITY), tf = _mm_set1_ps(INFINITY);
   for (int a = 0; a < 3; ++a) {

@@ -7,16 +7,13 @@
 #include <algorithm>
 #include <cmath>
 
-#if defined(__SSE2__) || defined(_M_X64)
-#include <xmmintrin.h>
-#endif
-
 #include <glm/common.hpp>
 #include <glm/vec3.hpp>
 
 #include "framework/geometry/surface_hit.h"
 #include "framework/math/float_error.h"
 #include "framework/math/ray.h"
+#include "framework/math/sse.h"
 
 namespace pt {
 
@@ -39,7 +36,7 @@ struct ShearedRay {
     degenerate = ray.d[kz] == 0.0f;
     kx = (kz + 1) % 3, ky = (kx + 1) % 3;
     const glm::vec3 d(ray.d[kx], ray.d[ky], ray.d[kz]);
-#if defined(__SSE2__) || defined(_M_X64)
+#if PT_SSE2
     // The three quotients in one division of four lanes: each lane is the correctly rounded
     // quotient, as the scalar division's, and a shadow ray waited on three divisions in a row.
     alignas(16) float q[4];

@@ -21,7 +21,7 @@ struct alignas(16) Triangle4 {
   float corner[3][3][4];
 };
 
-#if PT_ACCEL_SSE
+#if PT_SSE2
 /// A sheared ray's per-ray values in every lane of a four-lane register.
 struct ShearedLanes4 {
   __m128 o[3], sx, sy, sz, tmin;
@@ -38,7 +38,7 @@ struct ShearedLanes8 {
 struct ShearedRay4 {
 #if PT_ACCEL_AVX
   ShearedLanes8 v8;  ///< the four-lane tests read its lower halves (lanes_of): no second copy
-#elif PT_ACCEL_SSE
+#elif PT_SSE2
   ShearedLanes4 v4;
 #endif
   ShearedRay r;
@@ -58,7 +58,7 @@ struct ShearedRay4 {
     for (int a = 0; a < 3; ++a) v8.o[a] = _mm256_set1_ps(r.o[a]);
     v8.sx = _mm256_set1_ps(r.sx), v8.sy = _mm256_set1_ps(r.sy), v8.sz = _mm256_set1_ps(r.sz);
     v8.tmin = _mm256_set1_ps(r.tmin);
-#elif PT_ACCEL_SSE
+#elif PT_SSE2
     for (int a = 0; a < 3; ++a) v4.o[a] = _mm_set1_ps(r.o[a]);
     v4.sx = _mm_set1_ps(r.sx), v4.sy = _mm_set1_ps(r.sy), v4.sz = _mm_set1_ps(r.sz);
     v4.tmin = _mm_set1_ps(r.tmin);
@@ -66,7 +66,7 @@ struct ShearedRay4 {
   }
 };
 
-#if PT_ACCEL_SSE
+#if PT_SSE2
 namespace triangle4_detail {
 
 // The operations the test needs, for four lanes (__m128) and eight (__m256) alike, so that one
@@ -210,7 +210,7 @@ inline unsigned candidates_of(const Edges<V>& g) {
 /// exactly 0 (which the exact test recomputes in double) or a NaN is always a candidate.
 inline unsigned triangle4_candidates(const Triangle4& tri, const ShearedRay4& ray, float tmax) {
   if (ray.r.degenerate) return 0u;
-#if PT_ACCEL_SSE
+#if PT_SSE2
   const Triangle4* const packets[1] = {&tri};
   return triangle4_detail::candidates_of(triangle4_detail::edges<__m128>(packets, ray, tmax));
 #else
@@ -246,7 +246,7 @@ struct TriangleLaneHits {
 using Triangle4Hits = TriangleLaneHits<4>;
 using Triangle8Hits = TriangleLaneHits<8>;
 
-#if PT_ACCEL_SSE
+#if PT_SSE2
 namespace triangle4_detail {
 
 /// The whole test in the lanes of V over the packets `tri` (one for __m128, two for __m256).
@@ -309,7 +309,7 @@ __attribute__((always_inline)) inline void intersect_lanes(const Triangle4* cons
 __attribute__((always_inline)) inline void triangle4_intersect(const Triangle4& tri,
                                                                const ShearedRay4& ray, float tmax,
                                                                unsigned lanes, Triangle4Hits* out) {
-#if PT_ACCEL_SSE
+#if PT_SSE2
   const Triangle4* const packets[1] = {&tri};
   triangle4_detail::intersect_lanes<__m128>(packets, ray, tmax, lanes, out);
 #else

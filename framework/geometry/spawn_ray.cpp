@@ -11,7 +11,7 @@
 
 namespace pt {
 
-#if PT_VEC3_LANES
+#if PT_SSE2
 namespace {
 using namespace lanes;
 
@@ -47,7 +47,7 @@ using namespace lanes;
 #endif
 
 Ray spawn_ray(const SurfaceHit& hit, const glm::vec3& w) {
-#if PT_VEC3_LANES
+#if PT_SSE2
   // Every bounce comes here: spawn_ray_portable's operations in lanes, the same bits.
   const V3 wv = load(w);
   return make_ray(offset_origin(load(hit.p), load(hit.p_error), load(hit.ng), wv), wv,
@@ -68,7 +68,7 @@ Ray spawn_ray_portable(const SurfaceHit& hit, const glm::vec3& w) {
 
 Ray spawn_ray_to(const SurfaceHit& hit, const glm::vec3& w, const glm::vec3& p,
                  const glm::vec3& p_error, const glm::vec3& n) {
-#if PT_VEC3_LANES
+#if PT_SSE2
   // Every shadow ray comes here (the portable version below, in lanes: the same bits).
   const V3 wv = load(w);
   const V3 o = offset_origin(load(hit.p), load(hit.p_error), load(hit.ng), wv);

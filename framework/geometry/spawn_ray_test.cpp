@@ -24,7 +24,7 @@ const float kDenorm = std::numeric_limits<float>::denorm_min();
 const std::vector<float> kSpecial = {0.0f, -0.0f, kDenorm, -kDenorm, 1.0f, -1.0f, kMax, -kMax,
                                      kInf, -kInf, kNaN, -kNaN, 1e-38f, -1e-38f, 3.5f, -2e10f};
 
-#if PT_VEC3_LANES
+#if PT_SSE2
 TEST(FrameworkSpawnRay, LaneStepsToTheNextFloatAreTheScalarOnesBitForBit) {
   for (float a : kSpecial)
     for (float b : kSpecial)

@@ -173,7 +173,7 @@ bool sample_triangles(const SampledLight& l, const glm::vec3& p, glm::vec2 u, bo
   const glm::vec3 n = t.n;
   if (n == glm::vec3(0.0f)) return false;
   const glm::vec3 bary = square_to_uniform_triangle({u0, u.y});
-#if PT_VEC3_LANES
+#if PT_SSE2
   // glm's operations below, three lanes at a time (framework/math/vec3_lanes.h): the same bits.
   using namespace lanes;
   const V3 wa = mul(splat(bary.x), load(t.a)), wb = mul(splat(bary.y), load(t.b)),

@@ -8,14 +8,9 @@
 
 #include <glm/vec3.hpp>
 
-#if defined(__SSE2__) || defined(_M_X64) || (defined(_M_IX86_FP) && _M_IX86_FP >= 2)
-#define PT_VEC3_LANES 1
-#include <emmintrin.h>
-#else
-#define PT_VEC3_LANES 0
-#endif
+#include "framework/math/sse.h"
 
-#if PT_VEC3_LANES
+#if PT_SSE2
 namespace pt::lanes {
 
 /// x, y, z in lanes 0-2; lane 3 is 0 after a load and carries no meaning.

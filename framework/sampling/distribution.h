@@ -6,14 +6,9 @@
 #include <cstdint>
 #include <vector>
 
-#if defined(__SSE2__) || defined(_M_X64) || (defined(_M_IX86_FP) && _M_IX86_FP >= 2)
-#define PT_DISTRIBUTION_SSE 1
-#include <emmintrin.h>
-#else
-#define PT_DISTRIBUTION_SSE 0
-#endif
-
 #include <glm/vec2.hpp>
+
+#include "framework/math/sse.h"
 
 namespace pt {
 
@@ -54,7 +49,7 @@ class Distribution1D {
       // the last cell: the clamp below makes both the last cell.
       const float* cdf = cdf_.data();
       int not_below = 0;
-#if PT_DISTRIBUTION_SSE
+#if PT_SSE2
       static constexpr int8_t kBits[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
       const __m128 uu = _mm_set1_ps(u);
       for (size_t k = 0; k < cdf_.size(); k += 4)

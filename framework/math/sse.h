@@ -1,0 +1,10 @@
+// Whether the build targets SSE2 (every x86-64 build does): the one test each SIMD path of the
+// project asks, so that they all agree on when their lanes exist.
+#pragma once
+
+#if defined(__SSE2__) || defined(_M_X64) || (defined(_M_IX86_FP) && _M_IX86_FP >= 2)
+#define PT_SSE2 1
+#include <emmintrin.h>
+#else
+#define PT_SSE2 0
+#endif
