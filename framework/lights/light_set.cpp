@@ -160,24 +160,16 @@ std::string panel_disagreement(const Scene& scene, const SampledLight& l,
          "hemisphere sampling all see and sample the same light";
 }
 
-// A point on one of light l's triangles, picked with probability area / l.area and uniformly on
-// it; one-sided (a panel) or not. Fills ls and returns whether the point can send light towards
-// p. Every light sample of a panel or mesh light comes here: its triangle's corners and normal
-// are read from the light's own table, and 1 / area is the light's.
-bool sample_triangles(const SampledLight& l, const glm::vec3& p, glm::vec2 u, bool one_sided,
-                      LightSample* ls) {
-  int cell;
-  const float x = l.triangle_pick.sample_continuous(u.x, nullptr, &cell);
-  const float u0 = std::clamp(x * float(l.triangle_pick.size()) - float(cell), 0.0f, 1.0f);
-  const SampledLight::SampledTriangle& t = l.sampled_triangles[cell];
-  const glm::vec3 n = t.n;
-  if (n == glm::vec3(0.0f)) return false;
-  const glm::vec3 bary = square_to_uniform_triangle({u0, u.y});
+// The end of every panel and mesh sample: the point q = wa + wb + wc on the light (the sum in
+// that order), its error bound γ6·(|wa| + |wb| + |wc|), and the light's normal n there. Fills ls
+// and returns whether the point can send light towards p.
+bool finish_surface_sample(const SampledLight& l, const glm::vec3& p, const glm::vec3& wa_,
+                           const glm::vec3& wb_, const glm::vec3& wc_, const glm::vec3& n,
+                           bool one_sided, LightSample* ls) {
 #if PT_SSE2
   // glm's operations below, three lanes at a time (framework/math/vec3_lanes.h): the same bits.
   using namespace lanes;
-  const V3 wa = mul(splat(bary.x), load(t.a)), wb = mul(splat(bary.y), load(t.b)),
-           wc = mul(splat(bary.z), load(t.c));
+  const V3 wa = load(wa_), wb = load(wb_), wc = load(wc_);
   const V3 q = add(add(wa, wb), wc);
   const V3 d = sub(q, load(p));
   const float dist = std::sqrt(lanes::dot(d, d));
@@ -190,23 +182,80 @@ bool sample_triangles(const SampledLight& l, const glm::vec3& p, glm::vec2 u, bo
   ls->n = n;
   const float cos_l = lanes::dot(neg(wi), load(n));
 #else
-  const glm::vec3 wa = bary.x * t.a, wb = bary.y * t.b, wc = bary.z * t.c;
-  const glm::vec3 q = wa + wb + wc;
+  const glm::vec3 q = wa_ + wb_ + wc_;
   const glm::vec3 d = q - p;
   const float dist = glm::length(d);
   if (!(dist > 0.0f) || !std::isfinite(dist)) return false;
   ls->wi = d / dist;
   ls->distance = dist;
   ls->p = q;
-  ls->p_error = gamma(6) * (glm::abs(wa) + glm::abs(wb) + glm::abs(wc));
+  ls->p_error = gamma(6) * (glm::abs(wa_) + glm::abs(wb_) + glm::abs(wc_));
   ls->n = n;
   const float cos_l = glm::dot(-ls->wi, n);
 #endif
   if (one_sided && !(cos_l > 0.0f)) return false;  // the back of a panel
-  // Picking the triangle with probability area/total and a point uniformly on it: 1/total.
+  // Uniform on the light's whole surface: 1 / area, whichever triangle the point is on.
   ls->pdf = area_to_solid_angle_pdf(l.inv_area, dist, cos_l);
   ls->L = ls->pdf > 0.0f ? l.radiance : glm::vec3(0.0f);
   return true;
+}
+
+// A point on one of light l's triangles, picked with probability area / l.area and uniformly on
+// it; one-sided (a panel) or not. Fills ls and returns whether the point can send light towards
+// p. Every light sample of a mesh light, and of a panel that is not a quad, comes here: its
+// triangle's corners and normal are read from the light's own table, and 1 / area is the light's.
+bool sample_triangles(const SampledLight& l, const glm::vec3& p, glm::vec2 u, bool one_sided,
+                      LightSample* ls) {
+  int cell;
+  const float x = l.triangle_pick.sample_continuous(u.x, nullptr, &cell);
+  const float u0 = std::clamp(x * float(l.triangle_pick.size()) - float(cell), 0.0f, 1.0f);
+  const SampledLight::SampledTriangle& t = l.sampled_triangles[cell];
+  if (t.n == glm::vec3(0.0f)) return false;
+  const glm::vec3 bary = square_to_uniform_triangle({u0, u.y});
+  return finish_surface_sample(l, p, bary.x * t.a, bary.y * t.b, bary.z * t.c, t.n, one_sided, ls);
+}
+
+// A point of a quad panel: corner + u.x·edge_u + u.y·edge_v, uniform on the parallelogram its
+// two triangles tile, so with the density 1 / area that picking a triangle by area and a point on
+// it has. The terms' rounding (the edges are differences of the corners) is within γ6 of their
+// sizes; quad_slack covers the far corner's distance from the parallelogram's.
+bool sample_quad(const SampledLight& l, const glm::vec3& p, glm::vec2 u, LightSample* ls) {
+  if (!finish_surface_sample(l, p, l.corner, u.x * l.edge_u, u.y * l.edge_v,
+                             l.sampled_triangles[0].n, true, ls))
+    return false;
+  ls->p_error += l.quad_slack;
+  return true;
+}
+
+// Whether panel l's triangles are two that tile a parallelogram (sharing an edge, their far
+// corners x and y with x + y = the shared edge's ends, to rounding): if so, sets l's corner, edges
+// and quad_slack to it. Every course light's panel is such a quad.
+void find_quad(SampledLight* l) {
+  if (l->sampled_triangles.size() != 2) return;
+  const SampledLight::SampledTriangle &t1 = l->sampled_triangles[0], &t2 = l->sampled_triangles[1];
+  if (t1.n == glm::vec3(0.0f) || t2.n == glm::vec3(0.0f)) return;
+  const glm::vec3 c1[3] = {t1.a, t1.b, t1.c}, c2[3] = {t2.a, t2.b, t2.c};
+  auto in = [](const glm::vec3& q, const glm::vec3* c) { return q == c[0] || q == c[1] || q == c[2]; };
+  int x = -1, y = -1, shared = 0;
+  for (int i = 0; i < 3; ++i) {
+    if (in(c1[i], c2)) ++shared; else x = i;
+    if (!in(c2[i], c1)) y = i;
+  }
+  if (shared != 2 || x < 0 || y < 0) return;
+  const glm::vec3 s1 = c1[(x + 1) % 3], s2 = c1[(x + 2) % 3];
+  const glm::vec3 far = s1 + s2 - c1[x];  // the parallelogram's fourth corner
+  const glm::vec3 slack = glm::abs(far - c2[y]);
+  const glm::vec3 scale = glm::abs(s1) + glm::abs(s2) + glm::abs(c1[x]) + glm::abs(c2[y]);
+  for (int k = 0; k < 3; ++k)
+    if (!(slack[k] <= gamma(4) * scale[k])) return;  // not a parallelogram but for rounding
+  if (!(glm::dot(t1.n, t2.n) > 0.0f)) return;        // the two glow on different sides
+  l->corner = c1[x];
+  l->edge_u = s1 - c1[x];
+  l->edge_v = s2 - c1[x];
+  // The far corner's offset, and the rounding of computing it, both bound how far a point of the
+  // parallelogram near it can be from the second triangle.
+  l->quad_slack = slack + gamma(3) * scale;
+  l->quad = true;
 }
 
 }  // namespace
@@ -288,6 +337,7 @@ LightSet::LightSet(const Scene& scene, const EnvironmentMap* environment)
     for (float a : panel_areas[k]) l.area += a;
     l.triangle_pick = Distribution1D(panel_areas[k]);
     l.sampled_triangles = sampled_triangles(scene, l.triangles, l.normal);
+    find_quad(&l);
     for (uint32_t prim : l.triangles) primitive_light_[prim] = int(k);
   }
   for (auto& [material, m] : meshes) {
@@ -338,7 +388,9 @@ LightSample LightSet::sample(int index, const SurfaceHit& hit, glm::vec2 u) cons
   // this function's instructions).
   LightSample ls;
   if (l.kind == SampledLightKind::panel || l.kind == SampledLightKind::mesh) {
-    if (!sample_triangles(l, hit.p, u, l.kind == SampledLightKind::panel, &ls)) ls = LightSample{};
+    const bool found = l.quad ? sample_quad(l, hit.p, u, &ls)
+                              : sample_triangles(l, hit.p, u, l.kind == SampledLightKind::panel, &ls);
+    if (!found) ls = LightSample{};
   } else {
     ls = sample_other(l, hit, u);
   }

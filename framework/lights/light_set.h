@@ -9,8 +9,9 @@
 //   its size, whose centroids lie inside it: the course's "light" mesh) is one emitter: the
 //   panel's triangles, the shape the camera sees, emitting the light's radiance on the light's
 //   side only (one-sided, as the course's area light is). Light sampling picks points on those
-//   triangles by area; a ray that hits one sees the light's radiance from the front and nothing
-//   from behind. When the file's panel and light disagree (CBcoil's panel is 0.8 × 0.6 with
+//   triangles by area (a panel of two triangles that tile a parallelogram, as every course
+//   panel does, is sampled on that parallelogram: the same density, a shorter computation); a
+//   ray that hits one sees the light's radiance from the front and nothing from behind. When the file's panel and light disagree (CBcoil's panel is 0.8 × 0.6 with
 //   radiance 10 where its light is 0.6 × 0.8 with radiance 5), the course itself renders two
 //   emitters: the camera sees the panel, its light sampling lights the room with the light. We
 //   keep the panel's shape (what students see in the course's images) and the light's radiance
@@ -77,8 +78,15 @@ struct SampledLight {
   glm::vec3 radiance{0.0f};       ///< intensity, irradiance or radiance, by kind
   const Light* source = nullptr;  ///< the scene light it came from, if any
   // parallelogram, panel: the area light's corner + s·edge_u + t·edge_v, normal on its emitting
-  // side (a panel emits on the side of its triangles that agrees with it)
+  // side (a panel emits on the side of its triangles that agrees with it). A quad panel's corner
+  // and edges are then its own parallelogram, the one it is sampled on.
   glm::vec3 corner{0.0f}, edge_u{0.0f}, edge_v{0.0f}, normal{0.0f};
+  /// panel: its two triangles tile the parallelogram corner + s·edge_u + t·edge_v (every course
+  /// light's panel does), which is sampled directly: the same uniform density, without picking
+  /// a triangle and warping into it. quad_slack bounds how far a point of the parallelogram can
+  /// be from the triangles (the far corner's rounding), and widens each sample's error box.
+  bool quad = false;
+  glm::vec3 quad_slack{0.0f};
   float area = 0.0f;                    ///< the surface it samples: parallelogram, triangles or sphere
   std::vector<uint32_t> triangles;      ///< panel, mesh: its triangles (primitive indices)
   Distribution1D triangle_pick;         ///< panel, mesh: by area

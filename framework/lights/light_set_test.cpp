@@ -171,6 +171,7 @@ void expect_same_bits(const glm::vec3& a, const glm::vec3& b, const char* what, 
 // definition's, to the bit.
 TEST(FrameworkLightSet, TriangleLightSamplesAreTheirDefinitionBitForBit) {
   Scene s = panel_on_light(0.4f, 0.3f, 10.0f, {0.8f, 0, 0}, {0, 0.6f, 0}, 10.0f);
+  s.positions[3].x = -0.2f;  // a trapezoid: a panel of triangles, not a quad
   const uint32_t glow = test::add_material(s, glm::vec3(0), glm::vec3(2.0f, 3.0f, 4.0f));
   test::add_triangle(s, {-1, -0.5f, -1}, {1.5f, -0.7f, -1.2f}, {0.2f, 1.0f, -0.6f}, glow);
   test::add_triangle(s, {2, 2, 2}, {3, 2, 2.5f}, {2, 4, 2}, glow);
@@ -179,6 +180,7 @@ TEST(FrameworkLightSet, TriangleLightSamplesAreTheirDefinitionBitForBit) {
   const LightSet lights(s);
   ASSERT_EQ(lights.lights().size(), 2u);
   ASSERT_EQ(lights.lights()[0].kind, SampledLightKind::panel);
+  ASSERT_FALSE(lights.lights()[0].quad);
   ASSERT_EQ(lights.lights()[1].kind, SampledLightKind::mesh);
   Rng rng(11, 4);
   long kept = 0;
@@ -297,6 +299,175 @@ TEST(FrameworkLightSet, AnAreaLightWithoutAPanelCannotBeHit) {
   EXPECT_FALSE(lights.lights()[0].can_be_hit());
   EXPECT_EQ(lights.light_of_primitive(0), -1);
   EXPECT_TRUE(lights.warnings().empty());
+}
+
+
+/// A sample of quad panel `l` as its definition computes it in glm: the parallelogram's point
+/// corner + u.x·edge_u + u.y·edge_v, its error box widened by quad_slack, the first triangle's
+/// normal, the light's 1 / area.
+LightSample quad_sample_by_definition(const SampledLight& l, const glm::vec3& p, glm::vec2 u) {
+  const glm::vec3 wa = l.corner, wb = u.x * l.edge_u, wc = u.y * l.edge_v;
+  const glm::vec3 q = wa + wb + wc;
+  const glm::vec3 d = q - p;
+  const float dist = glm::length(d);
+  if (!(dist > 0.0f) || !std::isfinite(dist)) return {};
+  LightSample ls;
+  ls.wi = d / dist;
+  ls.distance = dist;
+  ls.p = q;
+  ls.p_error = gamma(6) * (glm::abs(wa) + glm::abs(wb) + glm::abs(wc)) + l.quad_slack;
+  ls.n = l.sampled_triangles[0].n;
+  const float cos_l = glm::dot(-ls.wi, ls.n);
+  if (!(cos_l > 0.0f)) return {};
+  ls.pdf = area_to_solid_angle_pdf(1.0f / l.area, dist, cos_l);
+  ls.L = ls.pdf > 0.0f ? l.radiance : glm::vec3(0.0f);
+  return ls;
+}
+
+/// Two emissive triangles on an area light of the same place: its panel, as the course's are.
+Scene two_triangle_panel(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c,
+                         const glm::vec3& d) {
+  Scene s = panel_on_light(0.4f, 0.3f, 10.0f, {0.8f, 0, 0}, {0, 0.6f, 0}, 10.0f);
+  Light& l = s.lights[0];
+  l.position = 0.25f * (a + b + c + d);
+  l.edge_u = b - a;
+  l.edge_v = d - a;
+  l.direction = -glm::normalize(glm::cross(b - a, d - a));
+  s.positions = {a, b, c, d};
+  return s;
+}
+
+// A panel of two triangles that tile a parallelogram (every course light's) is sampled on that
+// parallelogram; anything else (a trapezoid, triangles that share no edge, three triangles) keeps
+// picking a triangle. The parallelogram found is the panel's own: its corners are the panel's.
+TEST(FrameworkLightSet, AQuadPanelIsSampledAsItsParallelogram) {
+  {
+    const LightSet lights(panel_on_light(0.4f, 0.3f, 10.0f, {0.8f, 0, 0}, {0, 0.6f, 0}, 10.0f));
+    const SampledLight& l = lights.lights().at(0);
+    ASSERT_TRUE(l.quad);
+    // The corner opposite the shared edge (0, 2) is vertex 1; its edges run to the edge's ends.
+    EXPECT_EQ(l.corner, glm::vec3(0.4f, -0.3f, 1.0f));
+    EXPECT_EQ(l.corner + l.edge_u, glm::vec3(0.4f, 0.3f, 1.0f));
+    EXPECT_EQ(l.corner + l.edge_v, glm::vec3(-0.4f, -0.3f, 1.0f));
+    EXPECT_LT(glm::length(l.quad_slack), 1e-6f);
+  }
+  Scene trapezoid = panel_on_light(0.4f, 0.3f, 10.0f, {0.8f, 0, 0}, {0, 0.6f, 0}, 10.0f);
+  trapezoid.positions[3].x = -0.2f;
+  EXPECT_FALSE(LightSet(trapezoid).lights().at(0).quad);
+  Scene apart = panel_on_light(0.4f, 0.3f, 10.0f, {0.8f, 0, 0}, {0, 0.6f, 0}, 10.0f);
+  apart.positions.push_back(apart.positions[0]);  // the same place, another vertex: no shared edge
+  apart.positions.push_back(apart.positions[2]);
+  apart.triangles[1] = Triangle{{4, 5, 3}, 0};
+  EXPECT_TRUE(LightSet(apart).lights().at(0).quad) << "a shared edge is shared by position";
+  apart.positions[5].x += 1e-3f;  // now the two meet at one corner only
+  EXPECT_FALSE(LightSet(apart).lights().at(0).quad);
+  Scene three = panel_on_light(0.4f, 0.3f, 10.0f, {0.8f, 0, 0}, {0, 0.6f, 0}, 10.0f);
+  three.positions.push_back({-0.2f, 0.1f, 1.0f});
+  three.triangles[1] = Triangle{{0, 2, 4}, 0};
+  three.triangles.push_back(Triangle{{4, 2, 3}, 0});
+  three.triangles.push_back(Triangle{{0, 4, 3}, 0});
+  EXPECT_FALSE(LightSet(three).lights().at(0).quad);
+}
+
+// Every field of every quad sample is its definition's, to the bit, from points all around the
+// panel, on it, at zeros of either sign and far away.
+TEST(FrameworkLightSet, QuadPanelSamplesAreTheirDefinitionBitForBit) {
+  const Scene s = panel_on_light(0.4f, 0.3f, 10.0f, {0.8f, 0, 0}, {0, 0.6f, 0}, 10.0f);
+  const LightSet lights(s);
+  const SampledLight& l = lights.lights().at(0);
+  ASSERT_TRUE(l.quad);
+  Rng rng(12, 5);
+  long kept = 0;
+  for (int i = 0; i < 20000; ++i) {
+    SurfaceHit at;
+    at.p = glm::vec3(rng.next_float() * 6 - 3, rng.next_float() * 6 - 3, rng.next_float() * 6 - 3);
+    if (i % 5 == 0) at.p[i % 3] = i % 2 ? 0.0f : -0.0f;
+    if (i % 7 == 0) at.p *= 1e4f;
+    if (i % 11 == 0) at.p = glm::vec3(0.1f, 0.05f, 1.0f);  // on the panel
+    const glm::vec2 u = rng.next_2d();
+    const LightSample got = lights.sample(0, at, u);
+    const LightSample want = quad_sample_by_definition(l, at.p, u);
+    expect_same_bits(got.wi, want.wi, "wi", i);
+    expect_same_bits(got.L, want.L, "L", i);
+    expect_same_bits(got.p, want.p, "p", i);
+    expect_same_bits(got.p_error, want.p_error, "p_error", i);
+    expect_same_bits(got.n, want.n, "n", i);
+    ASSERT_EQ(float_to_bits(got.pdf), float_to_bits(want.pdf)) << "pdf, sample " << i;
+    ASSERT_EQ(float_to_bits(got.distance), float_to_bits(want.distance)) << "distance, " << i;
+    kept += want.pdf > 0.0f;
+  }
+  EXPECT_GT(kept, 8000) << "the samples from below the panel should reach it";
+}
+
+/// The point of triangle (a, b, c) nearest q, in double (the regions of Ericson's Real-Time
+/// Collision Detection, 5.1.5: a corner, an edge or the inside).
+glm::dvec3 nearest_on_triangle(const glm::dvec3& q, const glm::dvec3& a, const glm::dvec3& b,
+                               const glm::dvec3& c) {
+  const glm::dvec3 ab = b - a, ac = c - a, aq = q - a;
+  const double d1 = glm::dot(ab, aq), d2 = glm::dot(ac, aq);
+  if (d1 <= 0 && d2 <= 0) return a;
+  const glm::dvec3 bq = q - b;
+  const double d3 = glm::dot(ab, bq), d4 = glm::dot(ac, bq);
+  if (d3 >= 0 && d4 <= d3) return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + ab * (d1 / (d1 - d3));
+  const glm::dvec3 cq = q - c;
+  const double d5 = glm::dot(ab, cq), d6 = glm::dot(ac, cq);
+  if (d6 >= 0 && d5 <= d6) return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + ac * (d2 / (d2 - d6));
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+    return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
+  const double denom = 1.0 / (va + vb + vc);
+  return a + ab * (vb * denom) + ac * (vc * denom);
+}
+
+// A quad that is a parallelogram only to rounding (turned about two axes, far from the origin,
+// so no corner is exact): it is still found, and every sample's point lies within its error box
+// of a point of the triangles (in double), which is what lets the shadow ray stop short of the
+// light without meeting it. Near the origin, the same quad's samples fit their density.
+TEST(FrameworkLightSet, ARoundedQuadSamplesPointsWithinTheirErrorOfItsTriangles) {
+  const glm::dvec3 o(1234.5, -987.25, 321.125), eu(0.37, 0.21, -0.13), ev(-0.11, 0.29, 0.17);
+  const glm::vec3 a(o), b(o + eu), c(o + eu + ev), d(o + ev);
+  const Scene s = two_triangle_panel(a, b, c, d);
+  const LightSet lights(s);
+  const SampledLight& l = lights.lights().at(0);
+  ASSERT_EQ(l.kind, SampledLightKind::panel);
+  ASSERT_TRUE(l.quad);
+  SurfaceHit at;
+  at.p = glm::vec3(o - 2.0 * glm::cross(eu, ev) / glm::length(glm::cross(eu, ev)));
+  Rng rng(3);
+  int reached = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const LightSample ls = lights.sample(0, at, rng.next_2d());
+    if (!(ls.pdf > 0.0f)) continue;
+    ++reached;
+    // Within the error box of the nearest point of one of the two triangles.
+    const glm::dvec3 q(ls.p);
+    bool within = false;
+    for (const Triangle& t : s.triangles) {
+      const glm::dvec3 gap = glm::abs(q - nearest_on_triangle(q, glm::dvec3(s.positions[t.v[0]]),
+                                                              glm::dvec3(s.positions[t.v[1]]),
+                                                              glm::dvec3(s.positions[t.v[2]])));
+      if (gap.x <= ls.p_error.x && gap.y <= ls.p_error.y && gap.z <= ls.p_error.z) within = true;
+    }
+    ASSERT_TRUE(within) << "sample " << i << " at " << q.x << " " << q.y << " " << q.z;
+  }
+  EXPECT_GT(reached, 19000);
+
+
+  // The density: a slanted parallelogram seen from below, as the parallelogram light of
+  // RectangleAreaLightBySolidAngleFitsItsDensity is.
+  const Scene t = two_triangle_panel({-0.95f, -0.6f, 1.0f}, {0.65f, -0.6f, 1.0f},
+                                     {0.95f, 0.6f, 1.0f}, {-0.65f, 0.6f, 1.0f});
+  ASSERT_TRUE(LightSet(t).lights().at(0).quad);
+  SurfaceHit below;
+  below.p = glm::vec3(0.2f, -0.1f, 0.0f);
+  Chi2Options opt;
+  opt.quadrature = 96;  // edges cut cells: a fine quadrature keeps their expected share exact
+  const Chi2Result r = light_chi2(t, below, {0, 0, 1}, opt);
+  EXPECT_TRUE(chi2_fits(r)) << r.summary;
 }
 
 }  // namespace
