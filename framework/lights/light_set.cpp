@@ -162,8 +162,9 @@ std::string panel_disagreement(const Scene& scene, const SampledLight& l,
 
 // The end of every panel and mesh sample: the point q = wa + wb + wc on the light (the sum in
 // that order), its error bound γ6·(|wa| + |wb| + |wc|), and the light's normal n there. Fills ls
-// and returns whether the point can send light towards p.
-bool finish_surface_sample(const SampledLight& l, const glm::vec3& p, const glm::vec3& wa_,
+// and returns whether the point can send light towards p. Inlined into both of its callers: a
+// call would add to every light sample's chain.
+[[gnu::always_inline]] inline bool finish_surface_sample(const SampledLight& l, const glm::vec3& p, const glm::vec3& wa_,
                            const glm::vec3& wb_, const glm::vec3& wc_, const glm::vec3& n,
                            bool one_sided, LightSample* ls) {
 #if PT_SSE2
