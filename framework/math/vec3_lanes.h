@@ -64,6 +64,15 @@ inline V3 next_float_down(V3 v) {
   const __m128i stepped = _mm_add_epi32(_mm_castps_si128(from), _mm_or_si128(gt, _mm_set1_epi32(1)));
   return select(_mm_cmpeq_ps(v, _mm_set1_ps(-__builtin_inff())), v, _mm_castsi128_ps(stepped));
 }
+/// glm::cross: (a.y·b.z − b.y·a.z, a.z·b.x − b.z·a.x, a.x·b.y − b.x·a.y), the same products in
+/// the same order.
+inline V3 cross(V3 a, V3 b) {
+  const V3 a_yzx = _mm_shuffle_ps(a, a, _MM_SHUFFLE(3, 0, 2, 1));
+  const V3 b_zxy = _mm_shuffle_ps(b, b, _MM_SHUFFLE(3, 1, 0, 2));
+  const V3 b_yzx = _mm_shuffle_ps(b, b, _MM_SHUFFLE(3, 0, 2, 1));
+  const V3 a_zxy = _mm_shuffle_ps(a, a, _MM_SHUFFLE(3, 1, 0, 2));
+  return _mm_sub_ps(_mm_mul_ps(a_yzx, b_zxy), _mm_mul_ps(b_yzx, a_zxy));
+}
 /// Whether lanes 0-2 are all == 0 (glm's v == vec3(0)).
 inline bool all_zero(V3 a) {
   return (_mm_movemask_ps(_mm_cmpeq_ps(a, _mm_setzero_ps())) & 7) == 7;
