@@ -18,10 +18,13 @@ ShadingPointBase::ShadingPointBase(const Scene& scene, const Ray& ray, const Sur
     : hit(h) {
   static const Material kDefault;
   material = h.material < scene.materials.size() ? &scene.materials[h.material] : &kDefault;
-  if (!usable(hit.ng)) hit.ng = glm::vec3(0.0f, 0.0f, 1.0f);
-  hit.ng = glm::normalize(hit.ng);
-  hit.n = usable(hit.n) ? glm::normalize(hit.n) : hit.ng;
-  glm::vec3 to_viewer = usable(ray.d) ? -glm::normalize(ray.d) : hit.ng;
+  // The normals are worked on in locals read from h and stored once at the end: reading them
+  // back from the copy just made (hit) waited on that copy's stores, which a load spanning two
+  // of them cannot take its value from.
+  glm::vec3 ng = usable(h.ng) ? h.ng : glm::vec3(0.0f, 0.0f, 1.0f);
+  ng = glm::normalize(ng);
+  glm::vec3 n = usable(h.n) ? glm::normalize(h.n) : ng;
+  glm::vec3 to_viewer = usable(ray.d) ? -glm::normalize(ray.d) : ng;
   switch (material->kind) {
     case MaterialKind::glass:
       glass_ = GlassBsdf(material->reflectance, material->transmittance, material->ior);
@@ -37,12 +40,14 @@ ShadingPointBase::ShadingPointBase(const Scene& scene, const Ray& ray, const Sur
     default:  // diffuse; microfacet is rendered by its diffuse albedo until a part renders it
       break;  // ShadingPointWith makes the diffuse BSDF
   }
-  if (material->kind != MaterialKind::glass && glm::dot(to_viewer, hit.ng) < 0.0f) {
-    hit.ng = -hit.ng;
-    hit.n = -hit.n;
+  if (material->kind != MaterialKind::glass && glm::dot(to_viewer, ng) < 0.0f) {
+    ng = -ng;
+    n = -n;
   }
-  if (glm::dot(hit.n, hit.ng) < 0.0f) hit.n = hit.ng;  // a normal map pointing inside: ignore it
-  frame = Frame(hit.n);
+  if (glm::dot(n, ng) < 0.0f) n = ng;  // a normal map pointing inside: ignore it
+  hit.ng = ng;
+  hit.n = n;
+  frame = Frame(n);
   wo = frame.to_local(to_viewer);
 }
 
