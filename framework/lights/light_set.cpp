@@ -164,9 +164,10 @@ std::string panel_disagreement(const Scene& scene, const SampledLight& l,
 // that order), its error bound γ6·(|wa| + |wb| + |wc|), and the light's normal n there. Fills ls
 // and returns whether the point can send light towards p. Inlined into both of its callers: a
 // call would add to every light sample's chain.
-[[gnu::always_inline]] inline bool finish_surface_sample(const SampledLight& l, const glm::vec3& p, const glm::vec3& wa_,
-                           const glm::vec3& wb_, const glm::vec3& wc_, const glm::vec3& n,
-                           bool one_sided, LightSample* ls) {
+[[gnu::always_inline]] inline bool finish_surface_sample(const SampledLight& l, const glm::vec3& p,
+                                                         const glm::vec3& wa_, const glm::vec3& wb_,
+                                                         const glm::vec3& wc_, const glm::vec3& n,
+                                                         bool one_sided, LightSample* ls) {
 #if PT_SSE2
   // glm's operations below, three lanes at a time (framework/math/vec3_lanes.h): the same bits.
   using namespace lanes;
@@ -236,10 +237,15 @@ void find_quad(SampledLight* l) {
   const SampledLight::SampledTriangle &t1 = l->sampled_triangles[0], &t2 = l->sampled_triangles[1];
   if (t1.n == glm::vec3(0.0f) || t2.n == glm::vec3(0.0f)) return;
   const glm::vec3 c1[3] = {t1.a, t1.b, t1.c}, c2[3] = {t2.a, t2.b, t2.c};
-  auto in = [](const glm::vec3& q, const glm::vec3* c) { return q == c[0] || q == c[1] || q == c[2]; };
-  int x = -1, y = -1, shared = 0;
+  auto in = [](const glm::vec3& q, const glm::vec3* c) {
+    return q == c[0] || q == c[1] || q == c[2];
+  };
+  int x = -1, y = -1, shared = 0;  // x: t1's corner off the shared edge, y: t2's
   for (int i = 0; i < 3; ++i) {
-    if (in(c1[i], c2)) ++shared; else x = i;
+    if (in(c1[i], c2))
+      ++shared;
+    else
+      x = i;
     if (!in(c2[i], c1)) y = i;
   }
   if (shared != 2 || x < 0 || y < 0) return;
@@ -389,8 +395,9 @@ LightSample LightSet::sample(int index, const SurfaceHit& hit, glm::vec2 u) cons
   // this function's instructions).
   LightSample ls;
   if (l.kind == SampledLightKind::panel || l.kind == SampledLightKind::mesh) {
-    const bool found = l.quad ? sample_quad(l, hit.p, u, &ls)
-                              : sample_triangles(l, hit.p, u, l.kind == SampledLightKind::panel, &ls);
+    const bool one_sided = l.kind == SampledLightKind::panel;
+    const bool found =
+        l.quad ? sample_quad(l, hit.p, u, &ls) : sample_triangles(l, hit.p, u, one_sided, &ls);
     if (!found) ls = LightSample{};
   } else {
     ls = sample_other(l, hit, u);

@@ -11,7 +11,8 @@
 //   side only (one-sided, as the course's area light is). Light sampling picks points on those
 //   triangles by area (a panel of two triangles that tile a parallelogram, as every course
 //   panel does, is sampled on that parallelogram: the same density, a shorter computation); a
-//   ray that hits one sees the light's radiance from the front and nothing from behind. When the file's panel and light disagree (CBcoil's panel is 0.8 × 0.6 with
+//   ray that hits one sees the light's radiance from the front and nothing from behind. When
+//   the file's panel and light disagree (CBcoil's panel is 0.8 × 0.6 with
 //   radiance 10 where its light is 0.6 × 0.8 with radiance 5), the course itself renders two
 //   emitters: the camera sees the panel, its light sampling lights the room with the light. We
 //   keep the panel's shape (what students see in the course's images) and the light's radiance
