@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include <glm/geometric.hpp>
@@ -44,16 +45,23 @@ Chi2Result light_chi2(const Scene& scene, const SurfaceHit& at, const glm::vec3&
       Frame(glm::normalize(aim)), opt);
 }
 
+/// Light 0 of `scene`, sampled from `p`, fits the density pdf() claims (chi-square, in a frame
+/// around `aim`); the lights here have straight edges that cut cells, so a fine quadrature keeps
+/// their expected share exact.
+void expect_light_fits_its_density(const Scene& scene, const glm::vec3& p, const glm::vec3& aim) {
+  SurfaceHit at;
+  at.p = p;
+  Chi2Options opt;
+  opt.quadrature = 96;
+  const Chi2Result r = light_chi2(scene, at, aim, opt);
+  EXPECT_TRUE(chi2_fits(r)) << r.summary;
+}
+
 TEST(FrameworkLightSet, TriangleLightBySolidAngleFitsItsDensity) {
   Scene s;
   uint32_t m = test::add_material(s, glm::vec3(0), glm::vec3(1));
   test::add_triangle(s, {-1, -0.5f, 1}, {1.5f, -0.7f, 1.2f}, {0.2f, 1.0f, 0.6f}, m);
-  SurfaceHit at;
-  at.p = glm::vec3(0.1f, 0.0f, 0.0f);
-  Chi2Options opt;
-  opt.quadrature = 96;  // edges cut cells: a fine quadrature keeps their expected share exact
-  const Chi2Result r = light_chi2(s, at, {0.1f, 0.0f, 1.0f}, opt);
-  EXPECT_TRUE(chi2_fits(r)) << r.summary;
+  expect_light_fits_its_density(s, glm::vec3(0.1f, 0.0f, 0.0f), {0.1f, 0.0f, 1.0f});
 }
 
 TEST(FrameworkLightSet, RectangleAreaLightBySolidAngleFitsItsDensity) {
@@ -65,12 +73,7 @@ TEST(FrameworkLightSet, RectangleAreaLightBySolidAngleFitsItsDensity) {
   l.edge_v = glm::vec3(0.3f, 1.2f, 0.0f);
   l.direction = glm::vec3(0.0f, 0.0f, -1.0f);
   s.lights.push_back(l);
-  SurfaceHit at;
-  at.p = glm::vec3(0.2f, -0.1f, 0.0f);
-  Chi2Options opt;
-  opt.quadrature = 96;  // edges cut cells: a fine quadrature keeps their expected share exact
-  const Chi2Result r = light_chi2(s, at, {0, 0, 1}, opt);
-  EXPECT_TRUE(chi2_fits(r)) << r.summary;
+  expect_light_fits_its_density(s, glm::vec3(0.2f, -0.1f, 0.0f), {0, 0, 1});
 }
 
 // An area light seen through a panel that is not its shape (CBcoil's 0.8 × 0.6 panel on a
@@ -78,12 +81,7 @@ TEST(FrameworkLightSet, RectangleAreaLightBySolidAngleFitsItsDensity) {
 // panel point a ray in that direction reaches.
 TEST(FrameworkLightSet, AreaLightPanelBySolidAngleFitsItsDensity) {
   Scene s = test::disagreeing_panel_scene();
-  SurfaceHit at;
-  at.p = glm::vec3(0.4f, 0.0f, 0.0f);
-  Chi2Options opt;
-  opt.quadrature = 96;  // edges cut cells: a fine quadrature keeps their expected share exact
-  const Chi2Result r = light_chi2(s, at, {-0.4f, 0.0f, 0.5f}, opt);
-  EXPECT_TRUE(chi2_fits(r)) << r.summary;
+  expect_light_fits_its_density(s, glm::vec3(0.4f, 0.0f, 0.0f), {-0.4f, 0.0f, 0.5f});
 }
 
 TEST(FrameworkLightSet, SphereLightConeFitsItsDensity) {
@@ -133,6 +131,28 @@ SurfaceHit panel_hit(const glm::vec3& p, uint32_t primitive) {
   return h;
 }
 
+/// The end of a panel or mesh light's sample by its definition in glm: the point wa + wb + wc
+/// seen from p, its error bound γ6·(|wa| + |wb| + |wc|), the normal n, the light's 1 / area.
+LightSample surface_sample_by_definition(const SampledLight& l, const glm::vec3& p,
+                                         const glm::vec3& wa, const glm::vec3& wb,
+                                         const glm::vec3& wc, const glm::vec3& n, bool one_sided) {
+  const glm::vec3 q = wa + wb + wc;
+  const glm::vec3 d = q - p;
+  const float dist = glm::length(d);
+  if (!(dist > 0.0f) || !std::isfinite(dist)) return {};
+  LightSample ls;
+  ls.wi = d / dist;
+  ls.distance = dist;
+  ls.p = q;
+  ls.p_error = gamma(6) * (glm::abs(wa) + glm::abs(wb) + glm::abs(wc));
+  ls.n = n;
+  const float cos_l = glm::dot(-ls.wi, n);
+  if (one_sided && !(cos_l > 0.0f)) return {};
+  ls.pdf = area_to_solid_angle_pdf(1.0f / l.area, dist, cos_l);
+  ls.L = ls.pdf > 0.0f ? l.radiance : glm::vec3(0.0f);
+  return ls;
+}
+
 /// A sample of panel or mesh light `l` as its definition computes it in glm, one component at a
 /// time: LightSet::sample does these operations in SIMD lanes where the build has them, and must
 /// give the same bits.
@@ -144,26 +164,36 @@ LightSample triangle_sample_by_definition(const SampledLight& l, const glm::vec3
   const SampledLight::SampledTriangle& t = l.sampled_triangles[cell];
   if (t.n == glm::vec3(0.0f)) return {};
   const glm::vec3 bary = square_to_uniform_triangle({u0, u.y});
-  const glm::vec3 q = bary.x * t.a + bary.y * t.b + bary.z * t.c;
-  const glm::vec3 d = q - p;
-  const float dist = glm::length(d);
-  if (!(dist > 0.0f) || !std::isfinite(dist)) return {};
-  LightSample ls;
-  ls.wi = d / dist;
-  ls.distance = dist;
-  ls.p = q;
-  ls.p_error = gamma(6) * (glm::abs(bary.x * t.a) + glm::abs(bary.y * t.b) + glm::abs(bary.z * t.c));
-  ls.n = t.n;
-  const float cos_l = glm::dot(-ls.wi, t.n);
-  if (one_sided && !(cos_l > 0.0f)) return {};
-  ls.pdf = area_to_solid_angle_pdf(1.0f / l.area, dist, cos_l);
-  ls.L = ls.pdf > 0.0f ? l.radiance : glm::vec3(0.0f);
-  return ls;
+  return surface_sample_by_definition(l, p, bary.x * t.a, bary.y * t.b, bary.z * t.c, t.n,
+                                      one_sided);
 }
 
 void expect_same_bits(const glm::vec3& a, const glm::vec3& b, const char* what, int i) {
   for (int k = 0; k < 3; ++k)
     ASSERT_EQ(float_to_bits(a[k]), float_to_bits(b[k])) << what << "[" << k << "], sample " << i;
+}
+
+/// Every field of sample `got` is `want`'s, to the bit.
+void expect_same_sample(const LightSample& got, const LightSample& want, int i) {
+  expect_same_bits(got.wi, want.wi, "wi", i);
+  expect_same_bits(got.L, want.L, "L", i);
+  expect_same_bits(got.p, want.p, "p", i);
+  expect_same_bits(got.p_error, want.p_error, "p_error", i);
+  expect_same_bits(got.n, want.n, "n", i);
+  ASSERT_EQ(float_to_bits(got.pdf), float_to_bits(want.pdf)) << "pdf, sample " << i;
+  ASSERT_EQ(float_to_bits(got.distance), float_to_bits(want.distance)) << "distance, " << i;
+  ASSERT_EQ(got.delta, want.delta) << "delta, sample " << i;
+}
+
+/// Shading point i of a bit-for-bit test: anywhere around panel_on_light's panel, on a plane of
+/// zeros of either sign (every fifth), far away (every seventh) or on the panel (every eleventh).
+SurfaceHit point_around_the_panel(Rng& rng, int i) {
+  SurfaceHit at;
+  at.p = glm::vec3(rng.next_float() * 6 - 3, rng.next_float() * 6 - 3, rng.next_float() * 6 - 3);
+  if (i % 5 == 0) at.p[i % 3] = i % 2 ? 0.0f : -0.0f;
+  if (i % 7 == 0) at.p *= 1e4f;
+  if (i % 11 == 0) at.p = glm::vec3(0.1f, 0.05f, 1.0f);
+  return at;
 }
 
 // Panels (one-sided) and meshes (two-sided), seen from points all around them, some on the light
@@ -185,23 +215,13 @@ TEST(FrameworkLightSet, TriangleLightSamplesAreTheirDefinitionBitForBit) {
   Rng rng(11, 4);
   long kept = 0;
   for (int i = 0; i < 20000; ++i) {
-    SurfaceHit at;
-    at.p = glm::vec3(rng.next_float() * 6 - 3, rng.next_float() * 6 - 3, rng.next_float() * 6 - 3);
-    if (i % 5 == 0) at.p[i % 3] = i % 2 ? 0.0f : -0.0f;
-    if (i % 7 == 0) at.p *= 1e4f;
-    if (i % 11 == 0) at.p = glm::vec3(0.1f, 0.05f, 1.0f);  // on the panel
+    const SurfaceHit at = point_around_the_panel(rng, i);
     const glm::vec2 u = rng.next_2d();
     for (int k = 0; k < 2; ++k) {
       const LightSample got = lights.sample(k, at, u);
       const LightSample want = triangle_sample_by_definition(lights.lights()[k], at.p, u, k == 0);
-      expect_same_bits(got.wi, want.wi, "wi", i);
-      expect_same_bits(got.L, want.L, "L", i);
-      expect_same_bits(got.p, want.p, "p", i);
-      expect_same_bits(got.p_error, want.p_error, "p_error", i);
-      expect_same_bits(got.n, want.n, "n", i);
-      ASSERT_EQ(float_to_bits(got.pdf), float_to_bits(want.pdf)) << "pdf, sample " << i;
-      ASSERT_EQ(float_to_bits(got.distance), float_to_bits(want.distance)) << "distance, " << i;
-      ASSERT_EQ(got.delta, want.delta);
+      expect_same_sample(got, want, i);
+      if (testing::Test::HasFatalFailure()) return;
       kept += want.pdf > 0.0f;
     }
   }
@@ -306,21 +326,10 @@ TEST(FrameworkLightSet, AnAreaLightWithoutAPanelCannotBeHit) {
 /// corner + u.x·edge_u + u.y·edge_v, its error box widened by quad_slack, the first triangle's
 /// normal, the light's 1 / area.
 LightSample quad_sample_by_definition(const SampledLight& l, const glm::vec3& p, glm::vec2 u) {
-  const glm::vec3 wa = l.corner, wb = u.x * l.edge_u, wc = u.y * l.edge_v;
-  const glm::vec3 q = wa + wb + wc;
-  const glm::vec3 d = q - p;
-  const float dist = glm::length(d);
-  if (!(dist > 0.0f) || !std::isfinite(dist)) return {};
-  LightSample ls;
-  ls.wi = d / dist;
-  ls.distance = dist;
-  ls.p = q;
-  ls.p_error = gamma(6) * (glm::abs(wa) + glm::abs(wb) + glm::abs(wc)) + l.quad_slack;
-  ls.n = l.sampled_triangles[0].n;
-  const float cos_l = glm::dot(-ls.wi, ls.n);
-  if (!(cos_l > 0.0f)) return {};
-  ls.pdf = area_to_solid_angle_pdf(1.0f / l.area, dist, cos_l);
-  ls.L = ls.pdf > 0.0f ? l.radiance : glm::vec3(0.0f);
+  LightSample ls = surface_sample_by_definition(l, p, l.corner, u.x * l.edge_u, u.y * l.edge_v,
+                                                l.sampled_triangles[0].n, true);
+  if (ls.distance < std::numeric_limits<float>::infinity())  // a sample was made
+    ls.p_error += l.quad_slack;
   return ls;
 }
 
@@ -379,21 +388,12 @@ TEST(FrameworkLightSet, QuadPanelSamplesAreTheirDefinitionBitForBit) {
   Rng rng(12, 5);
   long kept = 0;
   for (int i = 0; i < 20000; ++i) {
-    SurfaceHit at;
-    at.p = glm::vec3(rng.next_float() * 6 - 3, rng.next_float() * 6 - 3, rng.next_float() * 6 - 3);
-    if (i % 5 == 0) at.p[i % 3] = i % 2 ? 0.0f : -0.0f;
-    if (i % 7 == 0) at.p *= 1e4f;
-    if (i % 11 == 0) at.p = glm::vec3(0.1f, 0.05f, 1.0f);  // on the panel
+    const SurfaceHit at = point_around_the_panel(rng, i);
     const glm::vec2 u = rng.next_2d();
     const LightSample got = lights.sample(0, at, u);
     const LightSample want = quad_sample_by_definition(l, at.p, u);
-    expect_same_bits(got.wi, want.wi, "wi", i);
-    expect_same_bits(got.L, want.L, "L", i);
-    expect_same_bits(got.p, want.p, "p", i);
-    expect_same_bits(got.p_error, want.p_error, "p_error", i);
-    expect_same_bits(got.n, want.n, "n", i);
-    ASSERT_EQ(float_to_bits(got.pdf), float_to_bits(want.pdf)) << "pdf, sample " << i;
-    ASSERT_EQ(float_to_bits(got.distance), float_to_bits(want.distance)) << "distance, " << i;
+    expect_same_sample(got, want, i);
+    if (testing::Test::HasFatalFailure()) return;
     kept += want.pdf > 0.0f;
   }
   EXPECT_GT(kept, 8000) << "the samples from below the panel should reach it";
@@ -456,18 +456,12 @@ TEST(FrameworkLightSet, ARoundedQuadSamplesPointsWithinTheirErrorOfItsTriangles)
   }
   EXPECT_GT(reached, 19000);
 
-
   // The density: a slanted parallelogram seen from below, as the parallelogram light of
   // RectangleAreaLightBySolidAngleFitsItsDensity is.
   const Scene t = two_triangle_panel({-0.95f, -0.6f, 1.0f}, {0.65f, -0.6f, 1.0f},
                                      {0.95f, 0.6f, 1.0f}, {-0.65f, 0.6f, 1.0f});
   ASSERT_TRUE(LightSet(t).lights().at(0).quad);
-  SurfaceHit below;
-  below.p = glm::vec3(0.2f, -0.1f, 0.0f);
-  Chi2Options opt;
-  opt.quadrature = 96;  // edges cut cells: a fine quadrature keeps their expected share exact
-  const Chi2Result r = light_chi2(t, below, {0, 0, 1}, opt);
-  EXPECT_TRUE(chi2_fits(r)) << r.summary;
+  expect_light_fits_its_density(t, glm::vec3(0.2f, -0.1f, 0.0f), {0, 0, 1});
 }
 
 }  // namespace
