@@ -164,8 +164,10 @@ are smaller; the table compares camera rays a second, which does not depend on t
 
 )";
     std::vector<Cell> rows;
-    for (const char* s : {"keenan/banana.dae", "meshedit/teapot.dae", "cornell_coil.dae",
-                          "sky/CBbunny.dae"}) {
+    // The project's bumpy sphere (780 triangles) beside its coil (6,380), so that the table shows
+    // the speed-up growing with the triangle count even where the course's meshes are absent.
+    for (const char* s : {"cornell_smooth.dae", "keenan/banana.dae", "meshedit/teapot.dae",
+                          "cornell_coil.dae", "sky/CBbunny.dae"}) {
       if (have(s)) rows.push_back({s, "", name(s)});
     }
     if (rows.empty()) return missing("render times with and without the BVH");
