@@ -255,7 +255,8 @@ void find_quad(SampledLight* l) {
   const glm::vec3 scale = glm::abs(s1) + glm::abs(s2) + glm::abs(c1[x]) + glm::abs(c2[y]);
   for (int k = 0; k < 3; ++k)
     if (!(slack[k] <= gamma(4) * scale[k])) return;  // not a parallelogram but for rounding
-  if (!(glm::dot(t1.n, t2.n) > 0.0f)) return;        // the two glow on different sides
+  // Both triangles' normals are already turned to the light's side (sampled_triangles), so the
+  // first one's stands for the quad's.
   l->corner = c1[x];
   l->edge_u = s1 - c1[x];
   l->edge_v = s2 - c1[x];
