@@ -128,6 +128,8 @@ struct Slot {
   Bounds3 box;
   float area;
   uint32_t small = 0;  ///< a subtree of at most WideBvh::kPackedLeafEntries: its entries
+  /// A leaf to keep as it is: regrouping it was tried (or it is a group, or a merge, already).
+  bool whole = false;
   /// The way down from the wide node's own binary node: at step d the split axis[d], and bit d of
   /// `right` set where it went into the second child. A merged run keeps the common part.
   static constexpr int kMaxPath = 16;
@@ -320,15 +322,52 @@ uint32_t WideBvh::collapse(const std::vector<BvhNode>& bin, uint32_t index, uint
   uint32_t group_sizes[WideBvh::kPackedLeafEntries];
   int n = 0;
   slots[n++] = make_slot(bin, index);
+  // Leaf slot k's entries grouped again as the area heuristic would pack them, where that makes
+  // 2 or more groups that fit the slots left: each group takes a slot. Returns the groups made
+  // (1: nothing changed).
+  auto split_leaf = [&](int k) {
+    const Slot leaf = slots[k];
+    const int groups = regroup_leaf(leaf.first, leaf.count, kWidth - n + 1, group_sizes);
+    if (groups < 2) return 1;
+    const int extra = groups - 1;
+    for (int j = n - 1; j > k; --j) slots[j + extra] = slots[j];
+    uint32_t first = leaf.first;
+    for (int g = 0; g < groups; ++g) {
+      Slot& part = slots[k + g];
+      part = leaf;
+      part.first = first;
+      part.count = group_sizes[g];
+      part.whole = true;
+      part.box = Bounds3{};
+      for (uint32_t e = first; e < first + part.count; ++e)
+        part.box.grow(scene_.primitive_bounds(order_[e]));
+      part.area = part.box.surface_area();
+      first += part.count;
+    }
+    n += extra;
+    return groups;
+  };
   // Slots stay in the binary tree's order throughout, so neighbouring leaves hold neighbouring
   // entries, and each slot remembers its way down, from which the visiting orders are made.
   for (;;) {
-    // Open the largest subtree until every slot is used: a big box is the one most rays enter.
+    // Open the largest box until every slot is used: a big box is the one most rays enter. A
+    // subtree opens into its two halves; a packed leaf whose entries lie far apart opens into
+    // the groups the area heuristic makes of them. A Cornell box's walls are such a leaf: the
+    // binary tree pairs them, each pair as large as the room, so one leaf of all eight triangles
+    // looked cheaper than two halves, yet every ray in the room entered it and tested them all,
+    // while a wall alone is a thin slab that only the rays that meet it enter (CBbunny's leaf of
+    // walls was tested by every shadow ray; its walls now take four slots of the root).
     while (n < kWidth) {
       int open = -1;
-      for (int k = 0; k < n; ++k)
-        if (slots[k].count == 0 && (open < 0 || slots[k].area > slots[open].area)) open = k;
+      for (int k = 0; k < n; ++k) {
+        const bool can_open = slots[k].count == 0 || (slots[k].count >= 2 && !slots[k].whole);
+        if (can_open && (open < 0 || slots[k].area > slots[open].area)) open = k;
+      }
       if (open < 0) break;
+      if (slots[open].count > 0) {
+        if (split_leaf(open) < 2) slots[open].whole = true;
+        continue;
+      }
       const BvhNode& parent = bin[slots[open].node];
       const Slot from = slots[open];
       for (int k = n; k > open + 1; --k) slots[k] = slots[k - 1];
@@ -348,6 +387,7 @@ uint32_t WideBvh::collapse(const std::vector<BvhNode>& bin, uint32_t index, uint
           !packing_pays(a.box, a.count, b.box, b.count))
         continue;
       a.count += b.count;
+      a.whole = true;  // packing them pays: no regrouping apart
       a.box.grow(b.box);
       a.area = a.box.surface_area();
       a.share_path(b);
@@ -371,26 +411,8 @@ uint32_t WideBvh::collapse(const std::vector<BvhNode>& bin, uint32_t index, uint
   // again as the area heuristic would pack them (a quad's two triangles stay together, the
   // spheres go apart), and the groups take a slot each where there is room.
   for (int k = 0; k < n; ++k) {
-    const Slot leaf = slots[k];
     if (n == kWidth) break;  // no slot left (regroup_leaf passes over a run it cannot regroup)
-    const int groups = regroup_leaf(leaf.first, leaf.count, kWidth - n + 1, group_sizes);
-    if (groups < 2) continue;
-    const int extra = groups - 1;
-    for (int j = n - 1; j > k; --j) slots[j + extra] = slots[j];
-    uint32_t first = leaf.first;
-    for (int g = 0; g < groups; ++g) {
-      Slot& part = slots[k + g];
-      part = leaf;
-      part.first = first;
-      part.count = group_sizes[g];
-      part.box = Bounds3{};
-      for (uint32_t e = first; e < first + part.count; ++e)
-        part.box.grow(scene_.primitive_bounds(order_[e]));
-      part.area = part.box.surface_area();
-      first += part.count;
-    }
-    n += extra;
-    k += extra;
+    k += split_leaf(k) - 1;
   }
   const uint32_t self = uint32_t(nodes_.size());
   {

@@ -78,7 +78,9 @@ struct NearestHit {
 /// pulling each node's largest grandchildren up until it has WideNode::kWidth children; a subtree of at most
 /// kPackedLeafEntries entries, or neighbouring leaves that fit that together, become one leaf
 /// (packets of the four-triangle SIMD test) where the surface area heuristic says one leaf is
-/// cheaper than two, larger binary leaves are kept whole; children are visited in an order
+/// cheaper than two, larger binary leaves are kept whole; a leaf whose entries lie far apart
+/// (a room's walls) is opened into the groups the heuristic makes of them, largest box first,
+/// as a subtree is opened into its halves; children are visited in an order
 /// per octant of directions made from the binary splits. Answers the same queries as BruteForce
 /// with the same answers: the nearest hit judged on the t each primitive reports (ties go to the
 /// lower primitive index), its SurfaceHit made once, by Part 1's intersect_primitive, for the

@@ -2,6 +2,7 @@
 // random rays per scene, on the project's scenes, the course's and degenerate inputs; its tree is
 // well formed; and images rendered through it are brute force's, pixel for pixel.
 // SOLUTION-ONLY FILE: not in the student handout, since it holds complete Part 1 and Part 2 answers.
+#include <cmath>
 #include <cstdio>
 #include <limits>
 #include <utility>
@@ -307,6 +308,56 @@ TEST(WideBvhBuild, EntriesFarApartInOneLeafGetSlotsOfTheirOwn) {
   EXPECT_EQ(floors, 1);
   EXPECT_EQ(spheres, 2);
   expect_brute_force_answers(scene, BvhSplitMethod::median, 4, test::random_rays(scene, 100000, 7));
+}
+
+// A room (floor, ceiling, back and side walls: two triangles each) around a mesh of about a
+// thousand triangles, as CBbunny is. The binary tree pairs the walls, each pair a box as large as
+// the room, so one packed leaf of all of them looked cheaper than two halves, and the mesh's
+// subtrees took the root's other slots: every ray in the room entered that leaf and tested every
+// wall. A leaf may hold at most one wall, and the answers stay brute force's.
+TEST(WideBvhBuild, WallsOfARoomAroundAMeshKeepLeavesOfTheirOwn) {
+  Scene scene;
+  auto quad = [&](glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d) {
+    test::add_triangle(&scene, a, b, c);
+    test::add_triangle(&scene, a, c, d);
+  };
+  quad({-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0});  // floor
+  quad({-1, -1, 2}, {-1, 1, 2}, {1, 1, 2}, {1, -1, 2});  // ceiling
+  quad({-1, 1, 0}, {1, 1, 0}, {1, 1, 2}, {-1, 1, 2});    // back
+  quad({-1, -1, 0}, {-1, 1, 0}, {-1, 1, 2}, {-1, -1, 2});  // left
+  quad({1, -1, 0}, {1, -1, 2}, {1, 1, 2}, {1, 1, 0});      // right
+  const uint32_t walls = uint32_t(scene.triangles.size());
+  // The mesh: a latitude-longitude sphere of radius 0.4 on the floor.
+  const int rings = 16, segments = 32;
+  auto at = [&](int i, int j) {
+    const float theta = glm::pi<float>() * float(i) / float(rings);
+    const float phi = 2.0f * glm::pi<float>() * float(j) / float(segments);
+    return glm::vec3(0.4f * std::sin(theta) * std::cos(phi), 0.4f * std::sin(theta) * std::sin(phi),
+                     0.4f + 0.4f * std::cos(theta));
+  };
+  for (int i = 0; i < rings; ++i)
+    for (int j = 0; j < segments; ++j) quad(at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+  const Bvh binary(scene, BvhOptions{BvhSplitMethod::sah, 4, 16, {}});
+  const WideBvh wide(scene, binary);
+  int wall_leaves = 0;
+  for (uint32_t i = 0; i < wide.nodes().size(); ++i) {
+    const WideNode& node = wide.nodes()[i];
+    for (uint32_t k = 0; k < wide.children(i); ++k) {
+      if (node.count[k] == 0) continue;
+      const uint32_t first = wide.packet_entry(node.child[k]);
+      int wall = -1;
+      for (uint32_t e = first; e < first + node.count[k]; ++e) {
+        const uint32_t prim = wide.order()[e];
+        if (prim >= walls) continue;
+        if (wall < 0) ++wall_leaves;
+        EXPECT_TRUE(wall < 0 || wall == int(prim / 2))
+            << "node " << i << " slot " << k << " holds walls " << wall << " and " << prim / 2;
+        wall = int(prim / 2);
+      }
+    }
+  }
+  EXPECT_EQ(wall_leaves, 5);
+  expect_brute_force_answers(scene, BvhSplitMethod::sah, 4, test::random_rays(scene, 100000, 11));
 }
 
 TEST(WideBvhBuild, TreeIsWellFormed) {
