@@ -703,9 +703,9 @@ bool WideBvh::occluded(const Ray& ray) const {
   if (nodes_.empty() || !traceable(ray)) return false;
   // The shear is made at the first packet of triangles the ray reaches: most shadow rays of a
   // room reach none (they cross only the root's empty space, or a sphere's box: 64% and 21% of
-  // CBspheres_lambertian's), and for them its
-  // setup (a division, a lane of each value) was wasted. (Raw storage, not std::optional,
-  // which zeroed the whole 448-byte payload on every call.)
+  // CBspheres_lambertian's), and for them its setup (a division, a lane of each value) was
+  // wasted. (Raw storage, not std::optional, which zeroed the whole 448-byte payload on every
+  // call.)
   alignas(ShearedRay4) unsigned char shear_storage[sizeof(ShearedRay4)];
   const ShearedRay4* sheared4 = nullptr;
   static_assert(std::is_trivially_destructible_v<ShearedRay4>, "left in its storage unended");
