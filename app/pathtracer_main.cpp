@@ -97,7 +97,9 @@ int run(int argc, char** argv) {
       std::cerr << "warning: " << command.scene_path << ": " << w << "\n";
   }
 
-  // The image module loads beside the BVH build and the render, not after the last ray.
+  // The image module loads beside the BVH build and the render, not after the last ray; the
+  // render's threads start first, or they would wait for the preload to open their libraries.
+  start_render_threads(settings);
   ImageModulePreload image_module(command.output_path);
   std::unique_ptr<RayQuery> query = make_ray_query(settings, scene);
   Film film(settings.width, settings.height);

@@ -71,6 +71,11 @@ RenderReport render_tiles(const RenderSettings& settings, const PixelFn& pixel, 
   return report;
 }
 
+void start_render_threads(const RenderSettings& settings) {
+  tbb::task_arena arena(settings.threads == 0 ? tbb::task_arena::automatic : settings.threads);
+  arena.execute([&] { tbb::parallel_for(0, arena.max_concurrency(), [](int) {}); });
+}
+
 std::string summary_line(const RenderReport& report) {
   char buffer[512];
   std::string text = "render: " + std::to_string(report.width) + "x" + std::to_string(report.height);
