@@ -21,6 +21,16 @@ PixelRect render_region(const RenderSettings& settings) {
   return {0, 0, settings.width, settings.height};
 }
 
+namespace {
+
+// The arena a render runs in: settings.threads threads, or every core for 0. start_render_threads
+// starts the same one that render_tiles then uses.
+tbb::task_arena render_arena(const RenderSettings& settings) {
+  return tbb::task_arena(settings.threads == 0 ? tbb::task_arena::automatic : settings.threads);
+}
+
+}  // namespace
+
 RenderReport render_tiles(const RenderSettings& settings, const PixelFn& pixel, Film* film,
                           const TileRenderOptions& options) {
   if (film->width() != settings.width || film->height() != settings.height)
@@ -37,7 +47,7 @@ RenderReport render_tiles(const RenderSettings& settings, const PixelFn& pixel, 
   const int width = settings.width;
   const uint64_t seed = settings.seed;
 
-  tbb::task_arena arena(settings.threads == 0 ? tbb::task_arena::automatic : settings.threads);
+  tbb::task_arena arena = render_arena(settings);
   RenderReport report;
   report.threads = arena.max_concurrency();
   auto start = std::chrono::steady_clock::now();
@@ -72,7 +82,7 @@ RenderReport render_tiles(const RenderSettings& settings, const PixelFn& pixel, 
 }
 
 void start_render_threads(const RenderSettings& settings) {
-  tbb::task_arena arena(settings.threads == 0 ? tbb::task_arena::automatic : settings.threads);
+  tbb::task_arena arena = render_arena(settings);
   arena.execute([&] { tbb::parallel_for(0, arena.max_concurrency(), [](int) {}); });
 }
 
