@@ -49,7 +49,6 @@ function(pt_add_isolated_grading)
       message(FATAL_ERROR "PT_SOLUTION_DIR: ${solution}/parts/${dir} has no sources")
     endif()
     add_library(pt_solution_part${k}_obj OBJECT ${srcs})
-    pt_lto_objects(pt_solution_part${k}_obj)
     target_include_directories(pt_solution_part${k}_obj PUBLIC ${PROJECT_SOURCE_DIR})
     target_link_libraries(pt_solution_part${k}_obj PUBLIC ${below})
     get_property(pipeline GLOBAL PROPERTY PT_PART${k}_PIPELINE)
@@ -87,7 +86,6 @@ function(pt_add_isolated_grading)
     add_executable(pathtracer_isolated${n} ${PROJECT_SOURCE_DIR}/app/pathtracer_main.cpp
                                           ${PROJECT_SOURCE_DIR}/app/command_line.cpp)
     target_link_libraries(pathtracer_isolated${n} PRIVATE pt_isolated${n})
-    pt_enable_lto(pathtracer_isolated${n})
 
     get_property(dir GLOBAL PROPERTY PT_PART${n}_DIR)
     pt_add_tests_in(DIR ${PROJECT_SOURCE_DIR}/parts/${dir}/tests LABEL part${n}_isolated

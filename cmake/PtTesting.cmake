@@ -43,7 +43,6 @@ function(pt_add_library_in)
   # (cmake/PtParts.cmake) can put the same objects into another chain of layers without
   # compiling them again; compile options of the library go on NAME_obj.
   add_library(${A_NAME}_obj OBJECT ${srcs})
-  pt_lto_objects(${A_NAME}_obj)
   target_include_directories(${A_NAME}_obj PUBLIC ${PROJECT_SOURCE_DIR})
   target_link_libraries(${A_NAME}_obj PUBLIC ${A_LIBS})
   add_library(${A_NAME} STATIC $<TARGET_OBJECTS:${A_NAME}_obj>)
