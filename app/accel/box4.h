@@ -27,6 +27,29 @@ struct alignas(16) Box4 {
   float bounds[6][4];
 };
 
+/// Which of a box's six planes (Box4::bounds rows) a ray meets first and last along each axis, for
+/// a direction of each sign: bit a of the index is set when the direction is negative along a.
+struct BoxPlanes {
+  int near_plane[3], far_plane[3];
+};
+
+/// The planes a ray of the given octant meets first and last.
+constexpr BoxPlanes box_planes(int octant) {
+  BoxPlanes p{};
+  for (int a = 0; a < 3; ++a) {
+    const bool negative = (octant >> a & 1) != 0;
+    p.near_plane[a] = negative ? 3 + a : a;
+    p.far_plane[a] = negative ? a : 3 + a;
+  }
+  return p;
+}
+/// The planes of each of the eight octants, made once: a ray picks its row by the sign bits of
+/// its reciprocal direction (one movemask) instead of choosing six indices axis by axis, which
+/// was a third of a shadow ray's set-up in a small scene.
+inline constexpr BoxPlanes kBoxPlanes[8] = {box_planes(0), box_planes(1), box_planes(2),
+                                            box_planes(3), box_planes(4), box_planes(5),
+                                            box_planes(6), box_planes(7)};
+
 /// A ray prepared for Box4 tests: its origin and reciprocal direction in every lane, and per axis
 /// which of a box's planes it meets first (chosen by the direction's sign, so no swap is needed
 /// and a ray with a -0 component still treats the slab it runs along as unbounded).
@@ -45,7 +68,7 @@ struct Box4Ray {
   float o(int a, int k) const { return o4[a][k]; }
   float inv_d(int a, int k) const { return inv_d4[a][k]; }
 #endif
-  int near_plane[3], far_plane[3];
+  const BoxPlanes* planes;  ///< a row of kBoxPlanes
   float tmin = 0.0f;
 
   explicit Box4Ray(const Ray& ray) : tmin(ray.tmin) {
@@ -53,7 +76,12 @@ struct Box4Ray {
     // The three reciprocals in one division of four lanes (each lane rounded as a scalar
     // division would be): three divisions in a row were on every ray's way to its first box.
     alignas(16) float inverse[4];
-    _mm_store_ps(inverse, _mm_div_ps(_mm_set1_ps(1.0f), _mm_setr_ps(ray.d.x, ray.d.y, ray.d.z, 1.0f)));
+    const __m128 inverse4 = _mm_div_ps(_mm_set1_ps(1.0f), _mm_setr_ps(ray.d.x, ray.d.y, ray.d.z, 1.0f));
+    _mm_store_ps(inverse, inverse4);
+    planes = &kBoxPlanes[_mm_movemask_ps(inverse4) & 7];  // lane 3 (1/1) is positive
+#else
+    planes = &kBoxPlanes[int(std::signbit(1.0f / ray.d.x)) | int(std::signbit(1.0f / ray.d.y)) << 1 |
+                         int(std::signbit(1.0f / ray.d.z)) << 2];
 #endif
     for (int a = 0; a < 3; ++a) {
 #if PT_SSE2
@@ -70,8 +98,6 @@ struct Box4Ray {
 #else
       for (int k = 0; k < 4; ++k) o4[a][k] = ray.o[a], inv_d4[a][k] = inv;
 #endif
-      near_plane[a] = std::signbit(inv) ? 3 + a : a;
-      far_plane[a] = std::signbit(inv) ? a : 3 + a;
     }
   }
 };
@@ -115,9 +141,9 @@ inline unsigned intersect_box4(const Box4& box, const Box4Ray& ray, float tmax, 
   // _mm_max_ps(x, acc) returns acc when x is NaN: a slab the ray runs inside of narrows nothing.
   __m128 tn = _mm_set1_ps(-INFINITY), tf = _mm_set1_ps(INFINITY);
   for (int a = 0; a < 3; ++a) {
-    const __m128 n = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(box.bounds[ray.near_plane[a]]), ray.o(a)),
+    const __m128 n = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(box.bounds[ray.planes->near_plane[a]]), ray.o(a)),
                                 ray.inv_d(a));
-    const __m128 f = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(box.bounds[ray.far_plane[a]]), ray.o(a)),
+    const __m128 f = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(box.bounds[ray.planes->far_plane[a]]), ray.o(a)),
                                 ray.inv_d(a));
     tn = _mm_max_ps(n, tn);
     tf = _mm_min_ps(f, tf);
@@ -134,8 +160,8 @@ inline unsigned intersect_box4(const Box4& box, const Box4Ray& ray, float tmax, 
   for (int k = 0; k < 4; ++k) {
     float tn = -INFINITY, tf = INFINITY;
     for (int a = 0; a < 3; ++a) {
-      const float n = (box.bounds[ray.near_plane[a]][k] - ray.o(a, k)) * ray.inv_d(a, k);
-      const float f = (box.bounds[ray.far_plane[a]][k] - ray.o(a, k)) * ray.inv_d(a, k);
+      const float n = (box.bounds[ray.planes->near_plane[a]][k] - ray.o(a, k)) * ray.inv_d(a, k);
+      const float f = (box.bounds[ray.planes->far_plane[a]][k] - ray.o(a, k)) * ray.inv_d(a, k);
       tn = n > tn ? n : tn;
       tf = f < tf ? f : tf;
     }
@@ -164,8 +190,8 @@ inline unsigned intersect_box8(const Box4 boxes[2], const Box4Ray& ray, float tm
   // _mm256_max_ps, like _mm_max_ps, returns its second operand when the first is NaN.
   __m256 tn = _mm256_set1_ps(-INFINITY), tf = _mm256_set1_ps(INFINITY);
   for (int a = 0; a < 3; ++a) {
-    const __m256 n = _mm256_mul_ps(_mm256_sub_ps(plane(ray.near_plane[a]), ray.o8[a]), ray.inv_d8[a]);
-    const __m256 f = _mm256_mul_ps(_mm256_sub_ps(plane(ray.far_plane[a]), ray.o8[a]), ray.inv_d8[a]);
+    const __m256 n = _mm256_mul_ps(_mm256_sub_ps(plane(ray.planes->near_plane[a]), ray.o8[a]), ray.inv_d8[a]);
+    const __m256 f = _mm256_mul_ps(_mm256_sub_ps(plane(ray.planes->far_plane[a]), ray.o8[a]), ray.inv_d8[a]);
     tn = _mm256_max_ps(n, tn);
     tf = _mm256_min_ps(f, tf);
   }
