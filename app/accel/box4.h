@@ -76,11 +76,13 @@ struct Box4Ray {
     // The three reciprocals in one division of four lanes (each lane rounded as a scalar
     // division would be): three divisions in a row were on every ray's way to its first box.
     alignas(16) float inverse[4];
-    const __m128 inverse4 = _mm_div_ps(_mm_set1_ps(1.0f), _mm_setr_ps(ray.d.x, ray.d.y, ray.d.z, 1.0f));
+    const __m128 inverse4 =
+        _mm_div_ps(_mm_set1_ps(1.0f), _mm_setr_ps(ray.d.x, ray.d.y, ray.d.z, 1.0f));
     _mm_store_ps(inverse, inverse4);
     planes = &kBoxPlanes[_mm_movemask_ps(inverse4) & 7];  // lane 3 (1/1) is positive
 #else
-    planes = &kBoxPlanes[int(std::signbit(1.0f / ray.d.x)) | int(std::signbit(1.0f / ray.d.y)) << 1 |
+    planes = &kBoxPlanes[int(std::signbit(1.0f / ray.d.x)) |
+                         int(std::signbit(1.0f / ray.d.y)) << 1 |
                          int(std::signbit(1.0f / ray.d.z)) << 2];
 #endif
     for (int a = 0; a < 3; ++a) {
@@ -141,10 +143,10 @@ inline unsigned intersect_box4(const Box4& box, const Box4Ray& ray, float tmax, 
   // _mm_max_ps(x, acc) returns acc when x is NaN: a slab the ray runs inside of narrows nothing.
   __m128 tn = _mm_set1_ps(-INFINITY), tf = _mm_set1_ps(INFINITY);
   for (int a = 0; a < 3; ++a) {
-    const __m128 n = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(box.bounds[ray.planes->near_plane[a]]), ray.o(a)),
-                                ray.inv_d(a));
-    const __m128 f = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(box.bounds[ray.planes->far_plane[a]]), ray.o(a)),
-                                ray.inv_d(a));
+    const __m128 near_planes = _mm_load_ps(box.bounds[ray.planes->near_plane[a]]);
+    const __m128 far_planes = _mm_load_ps(box.bounds[ray.planes->far_plane[a]]);
+    const __m128 n = _mm_mul_ps(_mm_sub_ps(near_planes, ray.o(a)), ray.inv_d(a));
+    const __m128 f = _mm_mul_ps(_mm_sub_ps(far_planes, ray.o(a)), ray.inv_d(a));
     tn = _mm_max_ps(n, tn);
     tf = _mm_min_ps(f, tf);
   }
@@ -190,8 +192,10 @@ inline unsigned intersect_box8(const Box4 boxes[2], const Box4Ray& ray, float tm
   // _mm256_max_ps, like _mm_max_ps, returns its second operand when the first is NaN.
   __m256 tn = _mm256_set1_ps(-INFINITY), tf = _mm256_set1_ps(INFINITY);
   for (int a = 0; a < 3; ++a) {
-    const __m256 n = _mm256_mul_ps(_mm256_sub_ps(plane(ray.planes->near_plane[a]), ray.o8[a]), ray.inv_d8[a]);
-    const __m256 f = _mm256_mul_ps(_mm256_sub_ps(plane(ray.planes->far_plane[a]), ray.o8[a]), ray.inv_d8[a]);
+    const __m256 near_planes = plane(ray.planes->near_plane[a]);
+    const __m256 far_planes = plane(ray.planes->far_plane[a]);
+    const __m256 n = _mm256_mul_ps(_mm256_sub_ps(near_planes, ray.o8[a]), ray.inv_d8[a]);
+    const __m256 f = _mm256_mul_ps(_mm256_sub_ps(far_planes, ray.o8[a]), ray.inv_d8[a]);
     tn = _mm256_max_ps(n, tn);
     tf = _mm256_min_ps(f, tf);
   }
