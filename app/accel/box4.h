@@ -27,13 +27,13 @@ struct alignas(16) Box4 {
   float bounds[6][4];
 };
 
-/// Which of a box's six planes (Box4::bounds rows) a ray meets first and last along each axis, for
-/// a direction of each sign: bit a of the index is set when the direction is negative along a.
+/// Which of a box's six planes (Box4::bounds rows) a ray meets first and last along each axis.
 struct BoxPlanes {
   int near_plane[3], far_plane[3];
 };
 
-/// The planes a ray of the given octant meets first and last.
+/// The planes a ray meets first and last when its direction lies in `octant`: bit a set when the
+/// direction is negative along axis a (a -0 counts as negative, as its reciprocal is -inf).
 constexpr BoxPlanes box_planes(int octant) {
   BoxPlanes p{};
   for (int a = 0; a < 3; ++a) {
@@ -43,6 +43,7 @@ constexpr BoxPlanes box_planes(int octant) {
   }
   return p;
 }
+
 /// The planes of each of the eight octants, made once: a ray picks its row by the sign bits of
 /// its reciprocal direction (one movemask) instead of choosing six indices axis by axis, which
 /// was a third of a shadow ray's set-up in a small scene.
