@@ -69,7 +69,10 @@ struct Box4Ray {
   float o(int a, int k) const { return o4[a][k]; }
   float inv_d(int a, int k) const { return inv_d4[a][k]; }
 #endif
-  const BoxPlanes* planes;  ///< a row of kBoxPlanes
+  /// The direction's octant: bit a set when it is negative along axis a (-0 included), as
+  /// box_planes and a wide node's visiting orders take it.
+  int octant = 0;
+  const BoxPlanes* planes;  ///< kBoxPlanes[octant]
   float tmin = 0.0f;
 
   explicit Box4Ray(const Ray& ray) : tmin(ray.tmin) {
@@ -80,12 +83,13 @@ struct Box4Ray {
     const __m128 inverse4 =
         _mm_div_ps(_mm_set1_ps(1.0f), _mm_setr_ps(ray.d.x, ray.d.y, ray.d.z, 1.0f));
     _mm_store_ps(inverse, inverse4);
-    planes = &kBoxPlanes[_mm_movemask_ps(inverse4) & 7];  // lane 3 (1/1) is positive
+    // A reciprocal keeps its direction's sign (1/-0 is -inf); lane 3 (1/1) is positive.
+    octant = _mm_movemask_ps(inverse4) & 7;
 #else
-    planes = &kBoxPlanes[int(std::signbit(1.0f / ray.d.x)) |
-                         int(std::signbit(1.0f / ray.d.y)) << 1 |
-                         int(std::signbit(1.0f / ray.d.z)) << 2];
+    octant = int(std::signbit(ray.d.x)) | int(std::signbit(ray.d.y)) << 1 |
+             int(std::signbit(ray.d.z)) << 2;
 #endif
+    planes = &kBoxPlanes[octant];
     for (int a = 0; a < 3; ++a) {
 #if PT_SSE2
       const float inv = inverse[a];

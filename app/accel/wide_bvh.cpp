@@ -462,11 +462,6 @@ struct WideBvh::Nearest {
 
 namespace {
 
-/// Which octant a direction points into: bit a set when it is negative along axis a.
-int octant_of(const glm::vec3& d) {
-  return int(std::signbit(d.x)) | int(std::signbit(d.y)) << 1 | int(std::signbit(d.z)) << 2;
-}
-
 /// Asks for the cache lines of a child the ray enters as soon as its box test says so, so that
 /// the misses of all the children entered overlap (and a pushed child's lines arrive while its
 /// siblings are visited) instead of each stalling the traversal in turn when it is reached.
@@ -527,7 +522,7 @@ void WideBvh::find_nearest(const Ray& ray, Nearest* best) const {
   // the same t at the same spot (a duplicate, a coplanar neighbour) has an error of that size,
   // and its box, entered no later than its exact distance, must not be culled.
   float cull = ray.tmax;
-  const int octant = octant_of(ray.d);
+  const int octant = box_ray.octant;
   StackEntry stack[kStackSize];
   int top = 0;
   stack[top++] = {0, 0, ray.tmin};
