@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
 # Configures and builds the Release tree in build/ (or the tree named by $BUILD_DIR).
+#   tools/build.sh [-DNAME=VALUE ...] [cmake --build arguments, e.g. --target pathtracer]
+# The -D options go to the configure step (they stay in the tree's cache), the rest to the build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir="${BUILD_DIR:-build}"
@@ -14,5 +16,14 @@ if command -v ccache >/dev/null 2>&1; then
   launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
   export CCACHE_BASEDIR="$PWD" CCACHE_NOHASHDIR=1
 fi
-cmake -S . -B "$build_dir" "${generator[@]}" "${launcher[@]}" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$build_dir" -j "$jobs" "$@"
+configure=()
+build=()
+for a in "$@"; do
+  case "$a" in
+    -D*) configure+=("$a") ;;
+    *) build+=("$a") ;;
+  esac
+done
+cmake -S . -B "$build_dir" "${generator[@]}" "${launcher[@]}" -DCMAKE_BUILD_TYPE=Release \
+  "${configure[@]}" >/dev/null
+cmake --build "$build_dir" -j "$jobs" "${build[@]}"
