@@ -17,8 +17,9 @@ profile="$build_dir/pgo-profile"
 renders="$build_dir/pgo-renders"
 
 # What the renders exercise: light sampling at many samples a light (spheres, then a mesh with
-# vertex normals), deep paths through mirror and glass, a large mesh, adaptive sampling, MIS and
-# hemisphere sampling. Small images: the profile needs the proportions, not the pixels.
+# vertex normals), deep paths through mirror and glass and through a mesh of 6,368 triangles,
+# adaptive sampling, MIS and hemisphere sampling. Small images: the profile needs the proportions,
+# not the pixels.
 training=(
   "spheres-l16|scenes/cornell_spheres.dae -s 16 -l 16 -m 5 -r 96 72"
   "smooth-l16|scenes/cornell_smooth.dae -s 16 -l 16 -m 5 -r 96 72"
