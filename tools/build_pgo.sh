@@ -10,6 +10,10 @@
 # difference.
 #   tools/build_pgo.sh            then build-pgo/app/pathtracer, build-pgo/app/bench
 set -euo pipefail
+if [ $# -gt 0 ]; then
+  echo "build_pgo: takes no arguments (got '$*'); the tree is \$BUILD_DIR, build-pgo by default" >&2
+  exit 2
+fi
 cd "$(dirname "$0")/.."
 build_dir="${BUILD_DIR:-build-pgo}"
 case "$build_dir" in /*) ;; *) build_dir="$PWD/$build_dir" ;; esac
