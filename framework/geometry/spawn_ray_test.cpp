@@ -11,6 +11,9 @@
 #include "framework/math/float_error.h"
 #include "framework/math/vec3_lanes.h"
 #include "framework/sampling/rng.h"
+#ifdef __AVX2__
+#include <immintrin.h>
+#endif
 
 namespace pt {
 namespace {
@@ -25,18 +28,37 @@ const std::vector<float> kSpecial = {0.0f, -0.0f, kDenorm, -kDenorm, 1.0f, -1.0f
                                      kInf, -kInf, kNaN, -kNaN, 1e-38f, -1e-38f, 3.5f, -2e10f};
 
 #if PT_SSE2
-TEST(FrameworkSpawnRay, LaneStepsToTheNextFloatAreTheScalarOnesBitForBit) {
+// offset_ray_origin's step: up where the offset is positive, down where negative, none at zero or
+// NaN; each lane of four, and of eight where the build has AVX2.
+float step_definition(float v, float offset) {
+  return offset > 0 ? next_float_up(v) : offset < 0 ? next_float_down(v) : v;
+}
+
+TEST(FrameworkSpawnRay, LaneRoundingAwayIsTheScalarStepBitForBit) {
+  int lanes_checked = 0;
   for (float a : kSpecial)
     for (float b : kSpecial)
       for (float c : kSpecial) {
         const glm::vec3 v(a, b, c);
-        const glm::vec3 up = lanes::to_vec3(lanes::next_float_up(lanes::load(v)));
-        const glm::vec3 down = lanes::to_vec3(lanes::next_float_down(lanes::load(v)));
+        // each value against each offset: the offsets run through kSpecial in another order
+        const glm::vec3 offset(b, c, a);
+        const __m128 got = lanes::round_away(lanes::load(v), lanes::load(offset));
+        const glm::vec3 g = lanes::to_vec3(got);
+        for (int k = 0; k < 3; ++k, ++lanes_checked)
+          ASSERT_EQ(float_to_bits(g[k]), float_to_bits(step_definition(v[k], offset[k])))
+              << v[k] << " by " << offset[k];
+#ifdef __AVX2__
+        const __m256 got8 = lanes::round_away(_mm256_set_m128(lanes::load(offset), lanes::load(v)),
+                                              _mm256_set_m128(lanes::load(v), lanes::load(offset)));
+        const glm::vec3 lo = lanes::to_vec3(_mm256_castps256_ps128(got8));
+        const glm::vec3 hi = lanes::to_vec3(_mm256_extractf128_ps(got8, 1));
         for (int k = 0; k < 3; ++k) {
-          ASSERT_EQ(float_to_bits(up[k]), float_to_bits(next_float_up(v[k]))) << v[k];
-          ASSERT_EQ(float_to_bits(down[k]), float_to_bits(next_float_down(v[k]))) << v[k];
+          ASSERT_EQ(float_to_bits(lo[k]), float_to_bits(step_definition(v[k], offset[k])));
+          ASSERT_EQ(float_to_bits(hi[k]), float_to_bits(step_definition(offset[k], v[k])));
         }
+#endif
       }
+  EXPECT_EQ(lanes_checked, 3 * 16 * 16 * 16);
 }
 #endif
 

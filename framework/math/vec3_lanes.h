@@ -58,25 +58,25 @@ inline V3 select(V3 mask, V3 a, V3 b) {
 }
 /// glm::abs: x >= 0 ? x : -x, lane by lane (so -0 stays -0, and a NaN changes sign, as there).
 inline V3 glm_abs(V3 x) { return select(_mm_cmpge_ps(x, _mm_setzero_ps()), x, neg(x)); }
-/// float_error.h's next_float_up, lane by lane and to the bit: +inf stays, ±0 steps to the
-/// smallest denormal, anything else (NaN included) moves one unit in its bits.
-inline V3 next_float_up(V3 v) {
-  const V3 zero = _mm_setzero_ps();
-  const V3 from = _mm_andnot_ps(_mm_cmpeq_ps(v, zero), v);  // -0 counts as +0
-  const __m128i ge = _mm_castps_si128(_mm_cmpge_ps(from, zero));
-  // ge is -1 where from >= 0: subtracting (ge | 1) adds 1 there and takes 1 elsewhere
-  const __m128i stepped = _mm_sub_epi32(_mm_castps_si128(from), _mm_or_si128(ge, _mm_set1_epi32(1)));
-  return select(_mm_cmpeq_ps(v, _mm_set1_ps(__builtin_inff())), v, _mm_castsi128_ps(stepped));
-}
-/// float_error.h's next_float_down, lane by lane and to the bit.
-inline V3 next_float_down(V3 v) {
-  const V3 zero = _mm_setzero_ps();
-  const V3 is_zero = _mm_cmpeq_ps(v, zero);
-  const V3 from = select(is_zero, _mm_set1_ps(-0.0f), v);  // +0 counts as -0
-  const __m128i gt = _mm_castps_si128(_mm_cmpgt_ps(from, zero));
-  // adding (gt | 1) takes 1 where from > 0 and adds 1 elsewhere
-  const __m128i stepped = _mm_add_epi32(_mm_castps_si128(from), _mm_or_si128(gt, _mm_set1_epi32(1)));
-  return select(_mm_cmpeq_ps(v, _mm_set1_ps(-__builtin_inff())), v, _mm_castsi128_ps(stepped));
+/// offset_ray_origin's last step (float_error.h), lane by lane and to the bit: v moved to the next
+/// float up where `offset` > 0 and down where it is < 0, left where it is 0 or NaN. Up: +inf
+/// stays, ±0 steps to the smallest denormal, anything else (NaN included) moves one unit in its
+/// bits; down the mirror image. For four lanes (__m128) or eight (__m256, two points at once), in
+/// GCC's vector operations, which give each width its own instructions: the two steps in one,
+/// as the bits move down exactly where the step's direction and v's sign disagree.
+template <class F>
+[[gnu::always_inline]] inline F round_away(F v, F offset) {
+  using I = decltype(v < v);  // the lanes' integer masks (all bits or none)
+  const F zero{};
+  const I up = offset > zero, down = offset < zero;
+  const I bits = reinterpret_cast<I>(v);
+  const I lower = up ^ (v > zero);  // NaN counts as below zero: up lowers, down raises its bits
+  const I is_zero = v == zero;
+  // ±0 counts as +0 going up and -0 going down, and from there both step up in the bits.
+  const I from = is_zero ? (down & INT32_MIN) : bits;
+  const I stepped = from + ((lower & ~is_zero) | 1);
+  const I keep_infinity = ((bits & INT32_MAX) == 0x7f800000) & ~lower;  // +inf up, -inf down
+  return reinterpret_cast<F>(((up | down) & ~keep_infinity) ? stepped : bits);
 }
 /// glm::cross: (a.y·b.z − b.y·a.z, a.z·b.x − b.z·a.x, a.x·b.y − b.x·a.y), the same products in
 /// the same order.
