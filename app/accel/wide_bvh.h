@@ -138,6 +138,8 @@ class WideBvh final : public RayQuery {
   }
   template <bool kCheckEachCandidate, bool kPrefetchShading>
   void find_nearest(const Ray& ray, Nearest* best) const;
+  /// occluded()'s walk below the root, whose children `entered` the ray enters (not zero).
+  bool occluded_below_root(const Ray& ray, const Box4Ray& box_ray, unsigned entered) const;
 
   const Scene& scene_;
   std::vector<WideNode> nodes_;
