@@ -1,8 +1,8 @@
 #include "framework/lights/light_set.h"
 
 #include <algorithm>
-#include <cstddef>
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <map>
 #include <string>
