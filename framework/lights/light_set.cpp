@@ -200,6 +200,8 @@ void store_sample(LightSample* ls, lanes::V3 wi, lanes::V3 L, float pdf, float d
                                                          const glm::vec3& wc_, const glm::vec3& n,
                                                          bool one_sided, const glm::vec3* slack,
                                                          LightSample* ls) {
+  // Uniform on the light's whole surface: 1 / area, whichever triangle the point is on; nothing
+  // from the back of a one-sided panel.
 #if PT_SSE2
   // glm's operations below, three lanes at a time (framework/math/vec3_lanes.h): the same bits.
   using namespace lanes;
@@ -213,14 +215,15 @@ void store_sample(LightSample* ls, lanes::V3 wi, lanes::V3 L, float pdf, float d
   if (slack) p_error = add(p_error, load(*slack));
   const V3 nv = load(n);
   const float cos_l = lanes::dot(neg(wi), nv);
-#ifdef __AVX__
-  if (one_sided && !(cos_l > 0.0f)) return false;  // the back of a panel
-  // Uniform on the light's whole surface: 1 / area, whichever triangle the point is on.
+  if (one_sided && !(cos_l > 0.0f)) return false;
   const float pdf = area_to_solid_angle_pdf(l.inv_area, dist, cos_l);
-  store_sample(ls, wi, pdf > 0.0f ? load(l.radiance) : _mm_setzero_ps(), pdf, dist, q, p_error, nv);
-  return true;
+  const V3 L = pdf > 0.0f ? load(l.radiance) : _mm_setzero_ps();
+#ifdef __AVX__
+  store_sample(ls, wi, L, pdf, dist, q, p_error, nv);
 #else
   ls->wi = to_vec3(wi);
+  ls->L = to_vec3(L);
+  ls->pdf = pdf;
   ls->distance = dist;
   ls->p = to_vec3(q);
   ls->p_error = to_vec3(p_error);
@@ -231,20 +234,19 @@ void store_sample(LightSample* ls, lanes::V3 wi, lanes::V3 L, float pdf, float d
   const glm::vec3 d = q - p;
   const float dist = glm::length(d);
   if (!(dist > 0.0f) || !std::isfinite(dist)) return false;
-  ls->wi = d / dist;
+  const glm::vec3 wi = d / dist;
+  const float cos_l = glm::dot(-wi, n);
+  if (one_sided && !(cos_l > 0.0f)) return false;
+  ls->wi = wi;
   ls->distance = dist;
   ls->p = q;
   ls->p_error = gamma(6) * (glm::abs(wa_) + glm::abs(wb_) + glm::abs(wc_));
   if (slack) ls->p_error += *slack;
   ls->n = n;
-  const float cos_l = glm::dot(-ls->wi, n);
-#endif
-#if !(PT_SSE2 && defined(__AVX__))
-  if (one_sided && !(cos_l > 0.0f)) return false;  // the back of a panel
   ls->pdf = area_to_solid_angle_pdf(l.inv_area, dist, cos_l);
   ls->L = ls->pdf > 0.0f ? l.radiance : glm::vec3(0.0f);
-  return true;
 #endif
+  return true;
 }
 
 // A point on one of light l's triangles, picked with probability area / l.area and uniformly on
