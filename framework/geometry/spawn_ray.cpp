@@ -27,7 +27,8 @@ using namespace lanes;
 }
 
 #ifdef __AVX2__
-// Two points in one register: the first in lanes 0-2, the second in lanes 4-6.
+// Two points in one register: the first in lanes 0-2, the second in lanes 4-6. (AVX2, not AVX:
+// round_away's steps are integer operations on all eight lanes.)
 using V3x2 = __m256;
 
 inline V3x2 pair(V3 first, V3 second) { return _mm256_set_m128(second, first); }
