@@ -274,6 +274,103 @@ bool sample_quad(const SampledLight& l, const glm::vec3& p, glm::vec2 u, LightSa
                                l.sampled_triangles[0].n, true, &l.quad_slack, ls);
 }
 
+#if PT_SSE2 && defined(__AVX__)
+// Rows r[0..8) of an 8 × 8 block of floats become its columns: r[k] then holds lane k's eight
+// values in order (the fields of one sample).
+[[gnu::always_inline]] inline void transpose8(__m256 r[8]) {
+  const __m256 t0 = _mm256_unpacklo_ps(r[0], r[1]), t1 = _mm256_unpackhi_ps(r[0], r[1]);
+  const __m256 t2 = _mm256_unpacklo_ps(r[2], r[3]), t3 = _mm256_unpackhi_ps(r[2], r[3]);
+  const __m256 t4 = _mm256_unpacklo_ps(r[4], r[5]), t5 = _mm256_unpackhi_ps(r[4], r[5]);
+  const __m256 t6 = _mm256_unpacklo_ps(r[6], r[7]), t7 = _mm256_unpackhi_ps(r[6], r[7]);
+  const __m256 s0 = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(1, 0, 1, 0));
+  const __m256 s1 = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(3, 2, 3, 2));
+  const __m256 s2 = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(1, 0, 1, 0));
+  const __m256 s3 = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(3, 2, 3, 2));
+  const __m256 s4 = _mm256_shuffle_ps(t4, t6, _MM_SHUFFLE(1, 0, 1, 0));
+  const __m256 s5 = _mm256_shuffle_ps(t4, t6, _MM_SHUFFLE(3, 2, 3, 2));
+  const __m256 s6 = _mm256_shuffle_ps(t5, t7, _MM_SHUFFLE(1, 0, 1, 0));
+  const __m256 s7 = _mm256_shuffle_ps(t5, t7, _MM_SHUFFLE(3, 2, 3, 2));
+  r[0] = _mm256_permute2f128_ps(s0, s4, 0x20);
+  r[1] = _mm256_permute2f128_ps(s1, s5, 0x20);
+  r[2] = _mm256_permute2f128_ps(s2, s6, 0x20);
+  r[3] = _mm256_permute2f128_ps(s3, s7, 0x20);
+  r[4] = _mm256_permute2f128_ps(s0, s4, 0x31);
+  r[5] = _mm256_permute2f128_ps(s1, s5, 0x31);
+  r[6] = _mm256_permute2f128_ps(s2, s6, 0x31);
+  r[7] = _mm256_permute2f128_ps(s3, s7, 0x31);
+}
+
+// sample_quad for eight numbers u[0..8) at once, one sample a lane: every operation of
+// finish_surface_sample, in its order, on eight lanes instead of three, so each lane's bits are
+// the ones sample_quad makes (light_set_test checks it). A lane with no sample (p on the light,
+// the back of the panel) gets LightSample{}. Written as LightSet::sample writes one (stores of
+// 32, 32 and 8 bytes, see store_sample), after transposing the fields to samples.
+void sample_quad8(const SampledLight& l, const glm::vec3& p, const glm::vec2 u[8], LightSample out[8]) {
+  static_assert(sizeof(LightSample) == 72 && offsetof(LightSample, delta) == 68,
+                "the rows below are LightSample's fields in order");
+  auto splat = [](float x) { return _mm256_set1_ps(x); };
+  const __m256 ux = _mm256_setr_ps(u[0].x, u[1].x, u[2].x, u[3].x, u[4].x, u[5].x, u[6].x, u[7].x);
+  const __m256 uy = _mm256_setr_ps(u[0].y, u[1].y, u[2].y, u[3].y, u[4].y, u[5].y, u[6].y, u[7].y);
+  const __m256 sign = splat(-0.0f);
+  const glm::vec3& n = l.sampled_triangles[0].n;
+  __m256 q[3], d[3], wa_abs[3];
+  for (int k = 0; k < 3; ++k) {
+    const __m256 wa = splat(l.corner[k]);
+    const __m256 wb = _mm256_mul_ps(ux, splat(l.edge_u[k]));
+    const __m256 wc = _mm256_mul_ps(uy, splat(l.edge_v[k]));
+    q[k] = _mm256_add_ps(_mm256_add_ps(wa, wb), wc);
+    d[k] = _mm256_sub_ps(q[k], splat(p[k]));
+    wa_abs[k] = _mm256_add_ps(_mm256_add_ps(_mm256_andnot_ps(sign, wa), _mm256_andnot_ps(sign, wb)),
+                              _mm256_andnot_ps(sign, wc));
+  }
+  const __m256 dd = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(d[0], d[0]), _mm256_mul_ps(d[1], d[1])),
+                                  _mm256_mul_ps(d[2], d[2]));
+  const __m256 dist = _mm256_sqrt_ps(dd);
+  __m256 found = _mm256_and_ps(_mm256_cmp_ps(dist, _mm256_setzero_ps(), _CMP_GT_OQ),
+                               _mm256_cmp_ps(dist, splat(std::numeric_limits<float>::infinity()),
+                                             _CMP_NEQ_UQ));
+  __m256 wi[3], cos_l = _mm256_setzero_ps();
+  for (int k = 0; k < 3; ++k) {
+    wi[k] = _mm256_div_ps(d[k], dist);
+    const __m256 term = _mm256_mul_ps(_mm256_xor_ps(wi[k], sign), splat(n[k]));
+    cos_l = k == 0 ? term : _mm256_add_ps(cos_l, term);
+  }
+  found = _mm256_and_ps(found, _mm256_cmp_ps(cos_l, _mm256_setzero_ps(), _CMP_GT_OQ));
+  // area_to_solid_angle_pdf: 1/area · dist · dist / |cos|, zero where |cos| is not positive.
+  const __m256 c = _mm256_andnot_ps(sign, cos_l);
+  const __m256 pdf = _mm256_and_ps(
+      _mm256_cmp_ps(c, _mm256_setzero_ps(), _CMP_GT_OQ),
+      _mm256_div_ps(_mm256_mul_ps(_mm256_mul_ps(splat(l.inv_area), dist), dist), c));
+  const __m256 lit = _mm256_and_ps(found, _mm256_cmp_ps(pdf, _mm256_setzero_ps(), _CMP_GT_OQ));
+  // The rows: LightSample's 18 floats (the last, delta and padding, zero), each masked to its
+  // lane's `found` (LightSample{} elsewhere: zeros, and an infinite distance).
+  __m256 first[8] = {wi[0], wi[1], wi[2],
+                     _mm256_and_ps(lit, splat(l.radiance.x)), _mm256_and_ps(lit, splat(l.radiance.y)),
+                     _mm256_and_ps(lit, splat(l.radiance.z)), pdf, dist};
+  for (int k = 0; k < 7; ++k) first[k] = _mm256_and_ps(found, first[k]);
+  first[7] = _mm256_blendv_ps(splat(std::numeric_limits<float>::infinity()), dist, found);
+  __m256 second[8];
+  for (int k = 0; k < 3; ++k) {
+    second[k] = _mm256_and_ps(found, q[k]);
+    second[3 + k] = _mm256_and_ps(
+        found, _mm256_add_ps(_mm256_mul_ps(splat(gamma(6)), wa_abs[k]), splat(l.quad_slack[k])));
+  }
+  second[6] = _mm256_and_ps(found, splat(n.x));
+  second[7] = _mm256_and_ps(found, splat(n.y));
+  const __m256 nz = _mm256_and_ps(found, splat(n.z));
+  transpose8(first);
+  transpose8(second);
+  alignas(32) float last[8];
+  _mm256_store_ps(last, nz);
+  for (int j = 0; j < 8; ++j) {
+    float* to = reinterpret_cast<float*>(&out[j]);
+    _mm256_storeu_ps(to, first[j]);
+    _mm256_storeu_ps(to + 8, second[j]);
+    _mm_storel_pi(reinterpret_cast<__m64*>(to + 16), _mm_set_ss(last[j]));
+  }
+}
+#endif
+
 // Whether panel l's triangles are two that tile a parallelogram (sharing an edge, their far
 // corners x and y with x + y = the shared edge's ends, to rounding): if so, sets l's corner, edges
 // and quad_slack to it. Every course light's panel is such a quad.
@@ -449,6 +546,29 @@ LightSample LightSet::sample(int index, const SurfaceHit& hit, glm::vec2 u) cons
     ls = sample_other(l, hit, u);
   }
   return ls;
+}
+
+void LightSet::sample_batch(int index, const glm::vec3& p, const glm::vec2* u, int n,
+                            LightSample* out) const {
+  const SampledLight& l = lights_[index];
+#if PT_SSE2 && defined(__AVX__)
+  if (l.quad) {
+    // Eight lanes whatever n is: the spare ones repeat u[0] and are not written out.
+    glm::vec2 u8[8];
+    LightSample made[8];
+    for (int j = 0; j < 8; ++j) u8[j] = u[j < n ? j : 0];
+    LightSample* to = n == 8 ? out : made;
+    sample_quad8(l, p, u8, to);
+    if (to != out) std::copy(made, made + n, out);
+    return;
+  }
+#endif
+  const bool one_sided = l.kind == SampledLightKind::panel;
+  for (int j = 0; j < n; ++j) {
+    LightSample& ls = out[j];
+    const bool found = l.quad ? sample_quad(l, p, u[j], &ls) : sample_triangles(l, p, u[j], one_sided, &ls);
+    if (!found) ls = LightSample{};
+  }
 }
 
 LightSample LightSet::sample_other(const SampledLight& l, const SurfaceHit& hit,

@@ -423,6 +423,55 @@ glm::dvec3 nearest_on_triangle(const glm::dvec3& q, const glm::dvec3& a, const g
   return a + ab * (vb * denom) + ac * (vc * denom);
 }
 
+// sample_batch makes n samples side by side (a quad's in eight SIMD lanes, a trapezoid's and a
+// mesh's one by one): each is sample()'s for its u, to the bit, for every n from 1 to 8, from
+// points around the lights, on them, at zeros of either sign and far away, with u at 0 and at
+// the largest value below 1 among them. The quads are a course light's (its edges along two
+// axes, so each coordinate of a point sums one edge's term and a zero) and two turned about two
+// axes (every term of every coordinate counts: near the points, and far from the origin).
+TEST(FrameworkLightSet, BatchedSamplesAreTheSamplesOneByOneBitForBit) {
+  Scene s = panel_on_light(0.4f, 0.3f, 10.0f, {0.8f, 0, 0}, {0, 0.6f, 0}, 10.0f);
+  const uint32_t glow = test::add_material(s, glm::vec3(0), glm::vec3(2.0f, 3.0f, 4.0f));
+  test::add_triangle(s, {-1, -0.5f, -1}, {1.5f, -0.7f, -1.2f}, {0.2f, 1.0f, -0.6f}, glow);
+  test::add_triangle(s, {2, 2, 2}, {3, 2, 2.5f}, {2, 4, 2}, glow);
+  Scene trapezoid = panel_on_light(0.4f, 0.3f, 10.0f, {0.8f, 0, 0}, {0, 0.6f, 0}, 10.0f);
+  trapezoid.positions[3].x = -0.2f;
+  auto turned = [](const glm::dvec3& o) {
+    const glm::dvec3 eu(0.37, 0.21, -0.13), ev(-0.11, 0.29, 0.17);
+    return two_triangle_panel(glm::vec3(o), glm::vec3(o + eu), glm::vec3(o + eu + ev), glm::vec3(o + ev));
+  };
+  const Scene near = turned({0.1, -0.2, 0.9}), far = turned({1234.5, -987.25, 321.125});
+  const LightSet lights(s), trapezoid_lights(trapezoid), near_lights(near), far_lights(far);
+  ASSERT_TRUE(lights.lights()[0].quad);
+  ASSERT_EQ(lights.lights()[1].kind, SampledLightKind::mesh);
+  ASSERT_FALSE(trapezoid_lights.lights()[0].quad);
+  ASSERT_TRUE(near_lights.lights().at(0).quad);
+  ASSERT_TRUE(far_lights.lights().at(0).quad);
+  struct Light { const LightSet* set; int index; };
+  const Light cases[] = {{&lights, 0}, {&lights, 1}, {&trapezoid_lights, 0}, {&near_lights, 0},
+                         {&far_lights, 0}};
+  Rng rng(13, 6);
+  long kept = 0;
+  for (int i = 0; i < 6000; ++i) {
+    const SurfaceHit at = point_around_the_panel(rng, i);
+    const int n = 1 + i % LightSet::kBatchMost;
+    glm::vec2 u[LightSet::kBatchMost];
+    for (int j = 0; j < n; ++j) u[j] = rng.next_2d();
+    if (i % 13 == 0) u[0] = glm::vec2(0.0f), u[n - 1] = glm::vec2(1.0f - 0x1p-24f);
+    for (const Light& c : cases) {
+      ASSERT_TRUE(c.set->samples_in_batches(c.index));
+      LightSample got[LightSet::kBatchMost];
+      c.set->sample_batch(c.index, at.p, u, n, got);
+      for (int j = 0; j < n; ++j) {
+        expect_same_sample(got[j], c.set->sample(c.index, at, u[j]), i);
+        if (testing::Test::HasFatalFailure()) return;
+        kept += got[j].pdf > 0.0f;
+      }
+    }
+  }
+  EXPECT_GT(kept, 30000) << "most samples should reach the point";
+}
+
 // A quad that is a parallelogram only to rounding (turned about two axes, far from the origin,
 // so no corner is exact): it is still found, and every sample's point lies within its error box
 // of a point of the triangles (in double), which is what lets the shadow ray stop short of the
