@@ -16,7 +16,8 @@ std::unique_ptr<Integrator> Integrator::create(const RenderSettings& settings, c
     if (!in->environment_->load(settings.environment_map, error)) return nullptr;
   }
   in->lights_ = std::make_unique<LightSet>(scene, in->environment_.get());
-  in->ctx_.reset(new LightingContext{scene, query, *in->lights_});
+  in->sampler_ = std::make_unique<LightSampler>(*in->lights_);
+  in->ctx_.reset(new LightingContext{scene, query, *in->sampler_});
   LightingContext& c = *in->ctx_;
   c.light_samples = std::max(1, settings.light_samples);
   c.hemisphere = settings.hemisphere_sampling;
@@ -45,20 +46,22 @@ glm::vec3 estimate(const LightingContext& ctx, bool normals, bool direct_only, c
 }  // namespace
 
 glm::vec3 Integrator::radiance(const Ray& ray, Rng& rng) const {
-  return estimate(*ctx_, normals_, direct_only_, ray, rng);
+  return radiance(ray, rng, ctx_->query);
 }
 
 glm::vec3 Integrator::radiance(const Ray& ray, Rng& rng, const RayQuery& query) const {
   const LightingContext& c = *ctx_;
-  // Every field of the context but the query, which a reference cannot be reseated to.
-  LightingContext with_query{c.scene, query, c.lights};
-  with_query.light_samples = c.light_samples;
-  with_query.hemisphere = c.hemisphere;
-  with_query.mis = c.mis;
-  with_query.max_depth = c.max_depth;
-  with_query.russian_roulette = c.russian_roulette;
-  with_query.only_bounce = c.only_bounce;
-  return estimate(with_query, normals_, direct_only_, ray, rng);
+  // The camera sample's own lights, which may foresee its light samples from `rng`, and every
+  // field of the context but the query and lights, which references cannot be reseated to.
+  const LightSampler lights(*lights_, &rng, c.light_samples);
+  LightingContext sample_context{c.scene, query, lights};
+  sample_context.light_samples = c.light_samples;
+  sample_context.hemisphere = c.hemisphere;
+  sample_context.mis = c.mis;
+  sample_context.max_depth = c.max_depth;
+  sample_context.russian_roulette = c.russian_roulette;
+  sample_context.only_bounce = c.only_bounce;
+  return estimate(sample_context, normals_, direct_only_, ray, rng);
 }
 
 }  // namespace pt

@@ -1,0 +1,32 @@
+#include "framework/lights/light_sampler.h"
+
+#include <algorithm>
+
+namespace pt {
+
+LightSample LightSampler::sample_anew(int index, const SurfaceHit& hit, glm::vec2 u) const {
+  if (rng_ == nullptr || light_samples_ < 2) return set_.sample(index, hit, u);  // nothing to foresee
+  const bool same_run = index == light_ && same_bits(hit.p, p_);
+  if (next_ < count_) {
+    // Foreseen samples the estimate did not ask for: it draws its numbers some other way, and
+    // making more would only cost time. The rest of this camera sample is sampled call by call.
+    made_in_vain_ += count_ - next_;
+    foresee_ = false;
+  }
+  count_ = next_ = 0;
+  light_ = index;
+  p_ = hit.p;
+  run_ = same_run ? run_ + 1 : 1;
+  const int want = std::min(kBatch, light_samples_ - (run_ - 1));
+  if (!foresee_ || rng_ == nullptr || want < 2 || !set_.samples_in_batches(index))
+    return set_.sample(index, hit, u);
+  u_[0] = u;
+  Rng ahead = *rng_;
+  for (int j = 1; j < want; ++j) u_[j] = ahead.next_2d();
+  set_.sample_batch(index, hit.p, u_, want, batch_);
+  count_ = want;
+  next_ = 1;
+  return batch_[0];
+}
+
+}  // namespace pt
