@@ -42,8 +42,8 @@ class LightSampler {
   /// (-l), the most a batch makes for one light and point.
   explicit LightSampler(const LightSet& set, const Rng* rng = nullptr, int light_samples = 1)
       : set_(set), rng_(rng), light_samples_(light_samples) {}
-  LightSampler(const LightSampler&) = delete;
-  LightSampler& operator=(const LightSampler&) = delete;
+  // Copyable, as the set was (`auto lights = ctx.lights;` compiles and answers the same): a copy
+  // keeps its own batch.
 
   /// The set itself, for code that takes a LightSet.
   const LightSet& set() const { return set_; }

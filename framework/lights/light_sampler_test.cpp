@@ -112,6 +112,23 @@ TEST(FrameworkLightSampler, AnotherPointOrLightWithTheForeseenNumbersIsSampledAn
   EXPECT_GT(sampler.made_in_vain(), 0);
 }
 
+// What a student may write with ctx.lights, as with the set it used to be: take it as the set,
+// or copy it; each answers the set's samples.
+TEST(FrameworkLightSampler, StandsInForTheSetWhereCodeNamesTheSet) {
+  const Scene s = lit_scene();
+  const LightSet set(s);
+  Rng rng(8, 1);
+  const LightSampler sampler(set, &rng, 4);
+  const LightSet& as_set = sampler;
+  EXPECT_EQ(&as_set, &set);
+  const auto copy = sampler;
+  const SurfaceHit at = hit_at({0.2f, 0.1f, 0.3f});
+  for (int j = 0; j < 4; ++j) {
+    const glm::vec2 u = rng.next_2d();
+    EXPECT_TRUE(same_sample(copy.sample(0, at, u), set.sample(0, at, u)));
+  }
+}
+
 TEST(FrameworkLightSampler, WithoutAGeneratorEverySampleIsMadeOnItsOwn) {
   const Scene s = lit_scene();
   const LightSet set(s);
