@@ -553,14 +553,11 @@ void LightSet::sample_batch(int index, const glm::vec3& p, const glm::vec2* u, i
   const SampledLight& l = lights_[index];
 #if PT_SSE2 && defined(__AVX__)
   if (l.quad) {
-    // Eight lanes whatever n is: the spare ones repeat u[0] and are not written out.
-    glm::vec2 u8[8];
-    LightSample made[8];
-    for (int j = 0; j < 8; ++j) u8[j] = u[j < n ? j : 0];
-    LightSample* to = n == 8 ? out : made;
-    sample_quad8(l, p, u8, to);
-    if (to != out) std::copy(made, made + n, out);
-    return;
+    // Eight lanes whatever n is: the spare ones repeat u[0], into out's spare room.
+    if (n == kBatchMost) return sample_quad8(l, p, u, out);
+    glm::vec2 u8[kBatchMost];
+    for (int j = 0; j < kBatchMost; ++j) u8[j] = u[j < n ? j : 0];
+    return sample_quad8(l, p, u8, out);
   }
 #endif
   const bool one_sided = l.kind == SampledLightKind::panel;

@@ -137,7 +137,8 @@ class LightSet {
   /// The most samples sample_batch makes at once: eight lanes of an AVX register.
   static constexpr int kBatchMost = 8;
   /// sample(index, a hit at p, u[j]) for each j < n (n ≤ kBatchMost) into out[j], for a light that
-  /// samples_in_batches: the same samples, bit for bit, made side by side.
+  /// samples_in_batches: the same samples, bit for bit, made side by side. `out` has room for
+  /// kBatchMost samples; those past n may be overwritten (a batch is eight lanes whatever n is).
   void sample_batch(int index, const glm::vec3& p, const glm::vec2* u, int n, LightSample* out) const;
 
   /// Density (per steradian) with which sample() would pick direction `wi` from `hit` for light
