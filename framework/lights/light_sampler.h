@@ -3,6 +3,7 @@
 // are known.
 #pragma once
 
+#include <algorithm>
 #include <cstring>
 #if defined(__AVX__)
 #include <immintrin.h>
@@ -54,11 +55,8 @@ class LightSampler {
   glm::vec3 environment_radiance(const glm::vec3& dir) const { return set_.environment_radiance(dir); }
   /// LightSet::sample's answer, bit for bit (see above).
   LightSample sample(int index, const SurfaceHit& hit, glm::vec2 u) const {
-    if (next_ < count_ && index == light_ && same_bits(hit.p, p_) && same_bits(u, u_[next_])) {
-      ++run_;
-      ++answered_ahead_;
-      return copy_of(batch_[next_++]);
-    }
+    if (next_ < count_ && index == light_ && same_bits(hit.p, p_) && same_bits(u, u_[next_]))
+      return copy_of(batch_[next_++]);  // the counts are settled when the batch is done
     return sample_anew(index, hit, u);
   }
   float pdf(int index, const SurfaceHit& hit, const glm::vec3& wi, const SurfaceHit* on_light) const {
@@ -74,7 +72,7 @@ class LightSampler {
 
   /// How many calls were answered from a batch, and how many samples were made in one but never
   /// asked for (tests; the sampler's own judgement of whether foreseeing pays).
-  int answered_ahead() const { return answered_ahead_; }
+  int answered_ahead() const { return answered_ahead_ + std::max(0, next_ - 1); }
   int made_in_vain() const { return made_in_vain_; }
 
  private:
@@ -108,8 +106,8 @@ class LightSampler {
   // The batch: samples of light_ from p_ for the numbers u_, the next to answer batch_[next_].
   mutable int light_ = -1;
   mutable glm::vec3 p_{0.0f};
-  mutable int count_ = 0, next_ = 0;
-  mutable int run_ = 0;  ///< samples answered for light_ and p_ so far, in batches or not
+  mutable int count_ = 0, next_ = 0;  ///< next_: the batch's samples answered (its first at once)
+  mutable int before_ = 0;  ///< samples of light_ from p_ answered before this batch
   mutable bool foresee_ = true;
   mutable int answered_ahead_ = 0, made_in_vain_ = 0;
   mutable glm::vec2 u_[kBatch];
