@@ -5,7 +5,6 @@
 namespace pt {
 
 LightSample LightSampler::sample_anew(int index, const SurfaceHit& hit, glm::vec2 u) const {
-  if (rng_ == nullptr || light_samples_ < 2) return set_.sample(index, hit, u);  // nothing to foresee
   // The batch before is done: its counts are settled here, off the path of the calls it answered.
   const int answered = before_ + next_;
   answered_ahead_ += std::max(0, next_ - 1);
@@ -27,10 +26,10 @@ LightSample LightSampler::sample_anew(int index, const SurfaceHit& hit, glm::vec
   u_[0] = u;
   Rng ahead = *rng_;
   for (int j = 1; j < want; ++j) u_[j] = ahead.next_2d();
-  set_.sample_batch(index, hit.p, u_, want, batch_);
+  set_.sample_batch(index, hit.p, u_, want, batch_.at);
   count_ = want;
   next_ = 1;
-  return batch_[0];
+  return batch_.at[0];
 }
 
 }  // namespace pt

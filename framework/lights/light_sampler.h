@@ -42,7 +42,8 @@ class LightSampler {
   /// sample on its own; `light_samples`: how many samples the estimate takes of each area light
   /// (-l), the most a batch makes for one light and point.
   explicit LightSampler(const LightSet& set, const Rng* rng = nullptr, int light_samples = 1)
-      : set_(set), rng_(rng), light_samples_(light_samples) {}
+      : set_(set), rng_(rng), light_samples_(light_samples),
+        foresee_(rng != nullptr && light_samples > 1) {}
   // Copyable, as the set was (`auto lights = ctx.lights;` compiles and answers the same): a copy
   // keeps its own batch.
 
@@ -56,7 +57,8 @@ class LightSampler {
   /// LightSet::sample's answer, bit for bit (see above).
   LightSample sample(int index, const SurfaceHit& hit, glm::vec2 u) const {
     if (next_ < count_ && index == light_ && same_bits(hit.p, p_) && same_bits(u, u_[next_]))
-      return copy_of(batch_[next_++]);  // the counts are settled when the batch is done
+      return copy_of(batch_.at[next_++]);  // the counts are settled when the batch is done
+    if (!foresee_) return set_.sample(index, hit, u);
     return sample_anew(index, hit, u);
   }
   float pdf(int index, const SurfaceHit& hit, const glm::vec3& wi, const SurfaceHit* on_light) const {
@@ -108,10 +110,16 @@ class LightSampler {
   mutable glm::vec3 p_{0.0f};
   mutable int count_ = 0, next_ = 0;  ///< next_: the batch's samples answered (its first at once)
   mutable int before_ = 0;  ///< samples of light_ from p_ answered before this batch
-  mutable bool foresee_ = true;
+  mutable bool foresee_;  ///< a generator to read, several samples a light, no misprediction yet
   mutable int answered_ahead_ = 0, made_in_vain_ = 0;
   mutable glm::vec2 u_[kBatch];
-  mutable LightSample batch_[kBatch];
+  /// The batch's samples, left unwritten until a batch fills them: a sampler is made for every
+  /// camera sample, and clearing eight samples each time cost a -l 1 render 2% of its instructions.
+  union Batch {
+    Batch() {}
+    LightSample at[kBatch];
+  };
+  mutable Batch batch_;
 };
 
 }  // namespace pt
