@@ -274,6 +274,15 @@ bool sample_quad(const SampledLight& l, const glm::vec3& p, glm::vec2 u, LightSa
                                l.sampled_triangles[0].n, true, &l.quad_slack, ls);
 }
 
+// A panel's or mesh's sample from p into *ls (LightSample{} where its point cannot light p): what
+// sample() makes of those two kinds, and sample_batch() where it has no lanes.
+[[gnu::always_inline]] inline void sample_surface(const SampledLight& l, const glm::vec3& p, glm::vec2 u,
+                                                  LightSample* ls) {
+  const bool one_sided = l.kind == SampledLightKind::panel;
+  const bool found = l.quad ? sample_quad(l, p, u, ls) : sample_triangles(l, p, u, one_sided, ls);
+  if (!found) *ls = LightSample{};
+}
+
 #if PT_SSE2 && defined(__AVX__)
 // Rows r[0..8) of an 8 × 8 block of floats become its columns: r[k] then holds lane k's eight
 // values in order (the fields of one sample).
@@ -537,14 +546,10 @@ LightSample LightSet::sample(int index, const SurfaceHit& hit, glm::vec2 u) cons
   // course's lights, panels and meshes, fill it there; copying a sample out was a tenth of
   // this function's instructions).
   LightSample ls;
-  if (l.kind == SampledLightKind::panel || l.kind == SampledLightKind::mesh) {
-    const bool one_sided = l.kind == SampledLightKind::panel;
-    const bool found =
-        l.quad ? sample_quad(l, hit.p, u, &ls) : sample_triangles(l, hit.p, u, one_sided, &ls);
-    if (!found) ls = LightSample{};
-  } else {
+  if (samples_in_batches(index))
+    sample_surface(l, hit.p, u, &ls);
+  else
     ls = sample_other(l, hit, u);
-  }
   return ls;
 }
 
@@ -560,12 +565,7 @@ void LightSet::sample_batch(int index, const glm::vec3& p, const glm::vec2* u, i
     return sample_quad8(l, p, u8, out);
   }
 #endif
-  const bool one_sided = l.kind == SampledLightKind::panel;
-  for (int j = 0; j < n; ++j) {
-    LightSample& ls = out[j];
-    const bool found = l.quad ? sample_quad(l, p, u[j], &ls) : sample_triangles(l, p, u[j], one_sided, &ls);
-    if (!found) ls = LightSample{};
-  }
+  for (int j = 0; j < n; ++j) sample_surface(l, p, u[j], &out[j]);
 }
 
 LightSample LightSet::sample_other(const SampledLight& l, const SurfaceHit& hit,

@@ -130,7 +130,8 @@ class LightSet {
   LightSample sample(int index, const SurfaceHit& hit, glm::vec2 u) const;
 
   /// Whether a sample of light `index` depends on nothing of the surface point but its position
-  /// (panels and meshes), so that sample_batch() can make several of them at once.
+  /// (panels and meshes, sampled on their triangles), so that sample_batch() can make several of
+  /// them at once.
   bool samples_in_batches(int index) const {
     return lights_[index].kind == SampledLightKind::panel || lights_[index].kind == SampledLightKind::mesh;
   }
