@@ -495,6 +495,26 @@ inline int leaf_lines(uint32_t count) {
 /// without it, one packet a test is the same work without the copying.
 constexpr bool kPairPackets = PT_ACCEL_AVX != 0;
 
+/// Bit j set for each position j of a visiting order (three bits a position, as
+/// WideNode::order_for gives it) that names a slot set in `mask`.
+inline unsigned entered_positions(unsigned mask, unsigned order) {
+#ifdef __AVX2__
+  // Lane j shifts the mask left until its slot's bit is the sign bit, which a movemask collects:
+  // eight variable shifts in one instruction, where the scalar form took eight shift-and-mask
+  // chains on every node visit of a nearest-hit walk (a tenth of its instructions).
+  const __m256i slot = _mm256_and_si256(
+      _mm256_srlv_epi32(_mm256_set1_epi32(int(order)), _mm256_setr_epi32(0, 3, 6, 9, 12, 15, 18, 21)),
+      _mm256_set1_epi32(7));
+  const __m256i up =
+      _mm256_sllv_epi32(_mm256_set1_epi32(int(mask)), _mm256_sub_epi32(_mm256_set1_epi32(31), slot));
+  return unsigned(_mm256_movemask_ps(_mm256_castsi256_ps(up)));
+#else
+  unsigned positions = 0;
+  for (int j = 0; j < WideNode::kWidth; ++j) positions |= (mask >> ((order >> (3 * j)) & 7u) & 1u) << j;
+  return positions;
+#endif
+}
+
 /// A node or leaf still to visit, with the distance at which the ray enters its box.
 struct StackEntry {
   uint32_t child;
@@ -635,9 +655,7 @@ void WideBvh::find_nearest(const Ray& ray, Nearest* best) const {
       // Which positions of the order hold an entered child, found without a branch, so the walk
       // below goes through those only (a node's children are entered one or two at a time, and a
       // test per position was a branch the predictor could not learn).
-      unsigned positions = 0;
-      for (int j = 0; j < WideNode::kWidth; ++j)
-        positions |= (mask >> ((order >> (3 * j)) & 7u) & 1u) << j;
+      unsigned positions = entered_positions(mask, order);
       int next = -1;
       while (positions) {
         const int j = 31 - __builtin_clz(positions);
