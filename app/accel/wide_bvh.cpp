@@ -502,15 +502,16 @@ inline unsigned entered_positions(unsigned mask, unsigned order) {
   // Lane j shifts the mask left until its slot's bit is the sign bit, which a movemask collects:
   // eight variable shifts in one instruction, where the scalar form took eight shift-and-mask
   // chains on every node visit of a nearest-hit walk (a tenth of its instructions).
-  const __m256i slot = _mm256_and_si256(
-      _mm256_srlv_epi32(_mm256_set1_epi32(int(order)), _mm256_setr_epi32(0, 3, 6, 9, 12, 15, 18, 21)),
-      _mm256_set1_epi32(7));
-  const __m256i up =
-      _mm256_sllv_epi32(_mm256_set1_epi32(int(mask)), _mm256_sub_epi32(_mm256_set1_epi32(31), slot));
+  const __m256i shifts = _mm256_setr_epi32(0, 3, 6, 9, 12, 15, 18, 21);
+  const __m256i slot = _mm256_and_si256(_mm256_srlv_epi32(_mm256_set1_epi32(int(order)), shifts),
+                                        _mm256_set1_epi32(7));
+  const __m256i up = _mm256_sllv_epi32(_mm256_set1_epi32(int(mask)),
+                                       _mm256_sub_epi32(_mm256_set1_epi32(31), slot));
   return unsigned(_mm256_movemask_ps(_mm256_castsi256_ps(up)));
 #else
   unsigned positions = 0;
-  for (int j = 0; j < WideNode::kWidth; ++j) positions |= (mask >> ((order >> (3 * j)) & 7u) & 1u) << j;
+  for (int j = 0; j < WideNode::kWidth; ++j)
+    positions |= (mask >> ((order >> (3 * j)) & 7u) & 1u) << j;
   return positions;
 #endif
 }
