@@ -26,10 +26,10 @@ LightSample LightSampler::sample_anew(int index, const SurfaceHit& hit, glm::vec
   u_[0] = u;
   Rng ahead = *rng_;
   for (int j = 1; j < want; ++j) u_[j] = ahead.next_2d();
-  set_.sample_batch(index, hit.p, u_, want, batch_.at);
+  set_.sample_batch(index, hit.p, u_, want, batch_.at, &hit);
   count_ = want;
   next_ = 1;
-  return batch_.at[0];
+  return copy_of(batch_.at[0]);
 }
 
 }  // namespace pt

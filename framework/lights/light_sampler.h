@@ -82,18 +82,18 @@ class LightSampler {
     return std::memcmp(&a, &b, sizeof(glm::vec3)) == 0;
   }
   static bool same_bits(glm::vec2 a, glm::vec2 b) { return std::memcmp(&a, &b, sizeof(glm::vec2)) == 0; }
-  /// `ls`, copied as LightSet::sample writes a sample: in stores of 32, 32 and 8 bytes, the only
-  /// shape whose every field (and pair of neighbours, as the compiler merges loads) the caller's
-  /// loads can take straight from a store; a copy in 16-byte pieces made the shadow ray's spawn,
-  /// which reads p_error across such a seam, wait for the copy to reach the cache.
+  /// `ls`, copied as sample_batch writes a sample: in stores of 32 bytes, the only shape whose
+  /// every field (and pair of neighbours, as the compiler merges loads) the caller's loads can
+  /// take straight from a store; a copy in 16-byte pieces made the shadow ray's spawn, which
+  /// reads p_error across such a seam, wait for the copy to reach the cache.
   static LightSample copy_of(const LightSample& ls) {
     LightSample out;
 #if defined(__AVX__)
+    // With its shadow ray and the copies that ray is checked by: seven stores of 32 bytes.
+    static_assert(sizeof(LightSample) == 7 * 8 * sizeof(float), "a sample is seven 32-byte pieces");
     const float* from = reinterpret_cast<const float*>(&ls);
     float* to = reinterpret_cast<float*>(&out);
-    _mm256_storeu_ps(to, _mm256_loadu_ps(from));
-    _mm256_storeu_ps(to + 8, _mm256_loadu_ps(from + 8));
-    _mm_storel_pi(reinterpret_cast<__m64*>(to + 16), _mm_loadl_pi(_mm_setzero_ps(), reinterpret_cast<const __m64*>(from + 16)));
+    for (int k = 0; k < 7; ++k) _mm256_storeu_ps(to + 8 * k, _mm256_loadu_ps(from + 8 * k));
 #else
     out = ls;
 #endif

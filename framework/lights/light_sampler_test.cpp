@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 
 #include "framework/sampling/rng.h"
@@ -45,11 +46,14 @@ enum class Draws { one_pair_a_sample, an_extra_number_between, its_own_generator
 /// An estimate's light loop over `points`: `per_light` samples of each light from each point,
 /// drawn as `draws` says; every sample checked against LightSet::sample. Returns the sampler's
 /// counts of calls answered ahead and samples made in vain.
-std::pair<int, int> run_loop(const LightSet& set, int per_light, Draws draws, int points) {
+std::pair<int, int> run_loop(const LightSet& set, int per_light, Draws draws, int points,
+                             int* shadow_rays_made = nullptr) {
   Rng rng(5, 9), own(77, 1);
   const LightSampler sampler(set, &rng, per_light);
   for (int i = 0; i < points; ++i) {
-    const SurfaceHit at = hit_at(glm::vec3(rng.next_float() - 0.5f, rng.next_float() - 0.5f, 0.25f * (i % 3)));
+    SurfaceHit at = hit_at(glm::vec3(rng.next_float() - 0.5f, rng.next_float() - 0.5f, 0.25f * (i % 3)));
+    at.ng = glm::normalize(glm::vec3(rng.next_float() - 0.5f, rng.next_float() - 0.5f, 1.0f - 2.0f * (i % 2)));
+    at.p_error = glm::vec3(1e-6f * float(i % 4));
     for (int k = 0; k < int(set.lights().size()); ++k) {
       for (int j = 0; j < per_light; ++j) {
         if (draws == Draws::an_extra_number_between && j % 3 == 2) rng.next_float();
@@ -57,7 +61,14 @@ std::pair<int, int> run_loop(const LightSet& set, int per_light, Draws draws, in
         const LightSample got = sampler.sample(k, at, u);
         EXPECT_TRUE(same_sample(got, set.sample(k, at, u)))
             << "light " << k << ", point " << i << ", sample " << j;
+        // Its shadow ray, carried or not, is the one spawn_ray_to makes.
+        const Ray ray = spawn_shadow_ray(at, got);
+        const Ray want = std::isfinite(got.distance) ? spawn_ray_to(at, got.wi, got.p, got.p_error, got.n)
+                                                     : spawn_ray(at, got.wi);
+        EXPECT_EQ(std::memcmp(&ray, &want, sizeof(Ray)), 0)
+            << "shadow ray: light " << k << ", point " << i << ", sample " << j;
         if (testing::Test::HasFailure()) return {0, 0};
+        if (shadow_rays_made) *shadow_rays_made += got.shadow_ray_made;
       }
     }
   }
@@ -72,11 +83,14 @@ TEST(FrameworkLightSampler, ForeseesAnEstimateThatDrawsOnePairASample) {
   ASSERT_EQ(set.lights()[1].kind, SampledLightKind::mesh);
   // 16 samples a light: two batches of eight; 5: one of five; 12: eight and four.
   for (int per_light : {16, 5, 12}) {
-    const auto [ahead, in_vain] = run_loop(set, per_light, Draws::one_pair_a_sample, 50);
+    int rays = 0;
+    const auto [ahead, in_vain] = run_loop(set, per_light, Draws::one_pair_a_sample, 50, &rays);
     if (HasFailure()) return;
     const int batches = (per_light + 7) / 8;
     EXPECT_EQ(ahead, 50 * 2 * (per_light - batches)) << per_light << " a light";
     EXPECT_EQ(in_vain, 0) << per_light << " a light";
+    // The quad's batches carry their shadow rays (the mesh's, made one by one, do not).
+    EXPECT_GT(rays, 50 * per_light / 2) << per_light << " a light";
   }
 }
 

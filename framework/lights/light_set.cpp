@@ -176,14 +176,16 @@ void store_sample(LightSample* ls, lanes::V3 wi, lanes::V3 L, float pdf, float d
                     offsetof(LightSample, pdf) == 24 && offsetof(LightSample, distance) == 28 &&
                     offsetof(LightSample, p) == 32 && offsetof(LightSample, p_error) == 44 &&
                     offsetof(LightSample, n) == 56 && offsetof(LightSample, delta) == 68 &&
-                    sizeof(LightSample) == 72,
-                "the three stores below are laid out for LightSample's fields");
+                    offsetof(LightSample, shadow_ray_made) == 69 &&
+                    offsetof(LightSample, ahead_ng_z) == 72,
+                "the three stores below are laid out for LightSample's fields (and leave its "
+                "shadow ray unmade)");
   const __m128 pdf_distance = _mm_unpacklo_ps(_mm_set_ss(pdf), _mm_set_ss(distance));
   const __m128 first = _mm_insert_ps(wi, L, 0x30);                         // wi, L.x
   const __m128 second = _mm_shuffle_ps(L, pdf_distance, _MM_SHUFFLE(1, 0, 2, 1));  // L.y L.z pdf distance
   const __m128 third = _mm_insert_ps(p, p_error, 0x30);                    // p, p_error.x
   const __m128 fourth = _mm_shuffle_ps(p_error, n, _MM_SHUFFLE(1, 0, 2, 1));  // p_error.y .z, n.x n.y
-  const __m128 last = _mm_unpackhi_ps(n, _mm_setzero_ps());               // n.z, delta = false
+  const __m128 last = _mm_unpackhi_ps(n, _mm_setzero_ps());  // n.z; delta, shadow_ray_made false
   float* out = reinterpret_cast<float*>(ls);
   _mm256_storeu_ps(out, _mm256_set_m128(second, first));
   _mm256_storeu_ps(out + 8, _mm256_set_m128(fourth, third));
@@ -314,8 +316,12 @@ bool sample_quad(const SampledLight& l, const glm::vec3& p, glm::vec2 u, LightSa
 // the ones sample_quad makes (light_set_test checks it). A lane with no sample (p on the light,
 // the back of the panel) gets LightSample{}. Written as LightSet::sample writes one (stores of
 // 32, 32 and 8 bytes, see store_sample), after transposing the fields to samples.
-void sample_quad8(const SampledLight& l, const glm::vec3& p, const glm::vec2 u[8], LightSample out[8]) {
-  static_assert(sizeof(LightSample) == 72 && offsetof(LightSample, delta) == 68,
+void sample_quad8(const SampledLight& l, const glm::vec3& p, const glm::vec2 u[8], LightSample out[8],
+                  const SurfaceHit* from) {
+  static_assert(offsetof(LightSample, delta) == 68 && offsetof(LightSample, shadow_ray_made) == 69 &&
+                    offsetof(LightSample, ahead_ng_z) == 72 && offsetof(LightSample, ahead_ray) == 96 &&
+                    offsetof(LightSample, ahead_made) == 128 && offsetof(LightSample, ahead_from) == 192 &&
+                    sizeof(LightSample) == 224,
                 "the rows below are LightSample's fields in order");
   auto splat = [](float x) { return _mm256_set1_ps(x); };
   const __m256 ux = _mm256_setr_ps(u[0].x, u[1].x, u[2].x, u[3].x, u[4].x, u[5].x, u[6].x, u[7].x);
@@ -367,6 +373,81 @@ void sample_quad8(const SampledLight& l, const glm::vec3& p, const glm::vec2 u[8
   second[6] = _mm256_and_ps(found, splat(n.x));
   second[7] = _mm256_and_ps(found, splat(n.y));
   const __m256 nz = _mm256_and_ps(found, splat(n.z));
+#ifdef __AVX2__
+  if (from) {
+    // Each found sample's shadow ray, as spawn_shadow_ray makes it (spawn_ray_to, spawn_ray.cpp):
+    // its operations in their order, so each lane's bits are the ray's. The origin is the
+    // point's own offset, turned to the side each direction leaves by: one point a side.
+    using namespace lanes;
+    const V3 hng = load(from->ng), hp = load(from->p);
+    const V3 offset = mul(_mm_set1_ps(lanes::dot(glm_abs(hng), load(from->p_error))), hng);
+    alignas(16) float up[4], down[4];
+    _mm_store_ps(up, round_away(add(hp, offset), offset));
+    _mm_store_ps(down, round_away(add(hp, neg(offset)), neg(offset)));
+    auto dot8 = [](const __m256* a, const __m256* b) {
+      return _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(a[0], b[0]), _mm256_mul_ps(a[1], b[1])),
+                           _mm256_mul_ps(a[2], b[2]));
+    };
+    const __m256 zero = _mm256_setzero_ps();
+    const __m256 w[3] = {first[0], first[1], first[2]};
+    const __m256 ng8[3] = {splat(from->ng.x), splat(from->ng.y), splat(from->ng.z)};
+    const __m256 below = _mm256_cmp_ps(dot8(w, ng8), zero, _CMP_LT_OQ);
+    // The target: the light's point offset off it towards the shading point (-wi), or the point
+    // itself where the light has no normal.
+    const __m256 ln[3] = {second[6], second[7], nz};
+    const __m256 abs_ln[3] = {_mm256_andnot_ps(sign, ln[0]), _mm256_andnot_ps(sign, ln[1]),
+                              _mm256_andnot_ps(sign, ln[2])};
+    const __m256 spread = dot8(abs_ln, second + 3);
+    const __m256 minus_w[3] = {_mm256_xor_ps(w[0], sign), _mm256_xor_ps(w[1], sign),
+                               _mm256_xor_ps(w[2], sign)};
+    const __m256 flip = _mm256_and_ps(_mm256_cmp_ps(dot8(minus_w, ln), zero, _CMP_LT_OQ), sign);
+    const __m256 no_normal = _mm256_and_ps(
+        _mm256_and_ps(_mm256_cmp_ps(ln[0], zero, _CMP_EQ_OQ), _mm256_cmp_ps(ln[1], zero, _CMP_EQ_OQ)),
+        _mm256_cmp_ps(ln[2], zero, _CMP_EQ_OQ));
+    __m256 o[3], d[3];
+    for (int k = 0; k < 3; ++k) {
+      o[k] = _mm256_blendv_ps(splat(up[k]), splat(down[k]), below);
+      const __m256 off = _mm256_xor_ps(_mm256_mul_ps(spread, ln[k]), flip);
+      const __m256 target = _mm256_blendv_ps(round_away(_mm256_add_ps(second[k], off), off), second[k],
+                                             no_normal);
+      d[k] = _mm256_sub_ps(target, o[k]);
+    }
+    const __m256 len = _mm256_sqrt_ps(dot8(d, d));
+    const __m256 aimed = _mm256_cmp_ps(len, zero, _CMP_GT_OQ);  // else an empty ray along wi
+    __m256 ray[8], third[8];
+    for (int k = 0; k < 3; ++k) {
+      ray[k] = o[k];
+      ray[3 + k] = _mm256_blendv_ps(w[k], _mm256_div_ps(d[k], len), aimed);
+    }
+    ray[6] = zero;
+    ray[7] = _mm256_and_ps(aimed, _mm256_mul_ps(len, splat(1.0f - gamma(4))));
+    // Floats 16-23: n.z, delta (false) and shadow_ray_made (found) in one float's bytes, the
+    // point's ng.z, n.z again (as made), four unused.
+    const __m256 made_flag = _mm256_and_ps(found, _mm256_castsi256_ps(_mm256_set1_epi32(0x100)));
+    third[0] = nz, third[1] = made_flag, third[2] = splat(from->ng.z), third[3] = nz;
+    for (int k = 4; k < 8; ++k) third[k] = zero;
+    // The point's p, p_error, ng.x and ng.y: eight floats in a row, the same for every sample.
+    const __m256 point = _mm256_loadu_ps(
+        reinterpret_cast<const float*>(reinterpret_cast<const char*>(from) + offsetof(SurfaceHit, p)));
+    transpose8(first);
+    transpose8(second);
+    transpose8(third);
+    transpose8(ray);
+    for (int j = 0; j < 8; ++j) {
+      float* to = reinterpret_cast<float*>(&out[j]);
+      _mm256_storeu_ps(to, first[j]);
+      _mm256_storeu_ps(to + 8, second[j]);
+      _mm256_storeu_ps(to + 16, third[j]);
+      _mm256_storeu_ps(to + 24, ray[j]);
+      _mm256_storeu_ps(to + 32, first[j]);
+      _mm256_storeu_ps(to + 40, second[j]);
+      _mm256_storeu_ps(to + 48, point);
+    }
+    return;
+  }
+#else
+  (void)from;
+#endif
   transpose8(first);
   transpose8(second);
   alignas(32) float last[8];
@@ -554,17 +635,18 @@ LightSample LightSet::sample(int index, const SurfaceHit& hit, glm::vec2 u) cons
 }
 
 void LightSet::sample_batch(int index, const glm::vec3& p, const glm::vec2* u, int n,
-                            LightSample* out) const {
+                            LightSample* out, const SurfaceHit* shadow_from) const {
   const SampledLight& l = lights_[index];
 #if PT_SSE2 && defined(__AVX__)
   if (l.quad) {
     // Eight lanes whatever n is: the spare ones repeat u[0], into out's spare room.
-    if (n == kBatchMost) return sample_quad8(l, p, u, out);
+    if (n == kBatchMost) return sample_quad8(l, p, u, out, shadow_from);
     glm::vec2 u8[kBatchMost];
     for (int j = 0; j < kBatchMost; ++j) u8[j] = u[j < n ? j : 0];
-    return sample_quad8(l, p, u8, out);
+    return sample_quad8(l, p, u8, out, shadow_from);
   }
 #endif
+  (void)shadow_from;
   for (int j = 0; j < n; ++j) sample_surface(l, p, u[j], &out[j]);
 }
 

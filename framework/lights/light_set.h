@@ -33,11 +33,16 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <memory>
 #include <string>
 #include <vector>
+#if defined(__AVX2__)
+#include <immintrin.h>
+#endif
 
 #include <glm/vec2.hpp>
 #include <glm/geometric.hpp>
@@ -71,6 +76,19 @@ struct LightSample {
   glm::vec3 p_error{0.0f};  ///< its floating-point error bound
   glm::vec3 n{0.0f};        ///< the light's surface normal there (zero for point lights)
   bool delta = false;
+
+  // The framework's, not an estimate's (neither read nor write them): the shadow ray towards
+  // this sample, made beside it where the sampler makes samples in lanes, so spawn_shadow_ray
+  // hands it out instead of making it (one chain of a square root and a division the walk would
+  // wait on). It is handed out only while the fields above that it was made from, and the point
+  // asking, are to the bit what it was made for; otherwise spawn_shadow_ray makes the ray anew.
+  // Left unwritten unless shadow_ray_made; laid out in the 32-byte pieces it is written and
+  // copied by (floats 16-23, 24-31, 32-47, 48-55), so each check reads one whole store.
+  bool shadow_ray_made = false;
+  float ahead_ng_z, ahead_n_z, ahead_unused[4];  ///< the point's ng.z; n.z as made
+  float ahead_ray[8];    ///< the ray: o, d, tmin, tmax
+  float ahead_made[16];  ///< floats 0-15 of the sample as made (wi to n.y)
+  float ahead_from[8];   ///< the point's p, p_error, ng.x, ng.y
 };
 
 /// A light ready to be sampled: its kind and the geometry it samples from.
@@ -140,7 +158,10 @@ class LightSet {
   /// sample(index, a hit at p, u[j]) for each j < n (n ≤ kBatchMost) into out[j], for a light that
   /// samples_in_batches: the same samples, bit for bit, made side by side. `out` has room for
   /// kBatchMost samples; those past n may be overwritten (a batch is eight lanes whatever n is).
-  void sample_batch(int index, const glm::vec3& p, const glm::vec2* u, int n, LightSample* out) const;
+  /// With `shadow_from` (a hit at p), each sample made in lanes also carries the shadow ray
+  /// spawn_shadow_ray(*shadow_from, out[j]) makes, made in lanes too (the same bits).
+  void sample_batch(int index, const glm::vec3& p, const glm::vec2* u, int n, LightSample* out,
+                    const SurfaceHit* shadow_from = nullptr) const;
 
   /// Density (per steradian) with which sample() would pick direction `wi` from `hit` for light
   /// `index`, where the ray hit `on_light` (null for an escaping ray). Zero for delta lights.
@@ -175,9 +196,33 @@ class LightSet {
   glm::vec3 ambient_{0.0f};
 };
 
+/// Whether ls's ahead_ray was made from ls's fields and `hit` as they are now, to the bit.
+inline bool shadow_ray_made_for(const SurfaceHit& hit, const LightSample& ls) {
+  static_assert(sizeof(LightSample) == 56 * sizeof(float) && offsetof(LightSample, ahead_ray) == 96 &&
+                    offsetof(SurfaceHit, p) == 4 && offsetof(SurfaceHit, ng) == 28,
+                "ahead_made and ahead_from are copies of LightSample's and SurfaceHit's bytes");
+  const char* s = reinterpret_cast<const char*>(&ls);
+  const char* h = reinterpret_cast<const char*>(&hit);
+#if defined(__AVX2__)
+  auto at = [](const char* b) { return _mm256_loadu_si256(reinterpret_cast<const __m256i*>(b)); };
+  const __m256i differ = _mm256_or_si256(
+      _mm256_or_si256(_mm256_xor_si256(at(s), at(s + 128)), _mm256_xor_si256(at(s + 32), at(s + 160))),
+      _mm256_xor_si256(at(h + 4), at(s + 192)));
+  if (!_mm256_testz_si256(differ, differ)) return false;
+#else
+  if (std::memcmp(s, s + 128, 64) != 0 || std::memcmp(h + 4, s + 192, 32) != 0) return false;
+#endif
+  return std::memcmp(&ls.n.z, &ls.ahead_n_z, 4) == 0 && std::memcmp(&hit.ng.z, &ls.ahead_ng_z, 4) == 0;
+}
+
 /// The shadow ray from `hit` towards light sample `ls` (spawn_ray_to its point, or a ray in its
 /// direction for a distant light): it neither hits the surface it leaves nor the light it aims at.
 inline Ray spawn_shadow_ray(const SurfaceHit& hit, const LightSample& ls) {
+  if (ls.shadow_ray_made && shadow_ray_made_for(hit, ls)) {
+    Ray r;
+    std::memcpy(&r, ls.ahead_ray, sizeof r);
+    return r;
+  }
   return std::isfinite(ls.distance) ? spawn_ray_to(hit, ls.wi, ls.p, ls.p_error, ls.n)
                                     : spawn_ray(hit, ls.wi);
 }
