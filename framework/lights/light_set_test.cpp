@@ -485,8 +485,9 @@ bool same_ray(const Ray& a, const Ray& b) { return std::memcmp(&a, &b, sizeof(Ra
 // spawn_ray_to makes, to the bit, from points all around the light (as above) with normals of
 // every direction (both sides of each sample's direction, so both offset origins) and error
 // boxes from none to large. And the ray is handed out only for the sample and point it was made
-// for: a copy with any input changed (the sample's direction, point, error box, normal or
-// distance; the point's position, error box or normal) gets the ray made anew from its inputs.
+// for: a copy with any input changed (the sample's direction, point, error box, normal, whole or
+// its z alone, or distance; the point's position, error box or normal, whole or its z alone) gets
+// the ray made anew from its inputs.
 TEST(FrameworkLightSet, BatchedShadowRaysAreSpawnRayToBitForBit) {
   auto turned = [](const glm::dvec3& o) {
     const glm::dvec3 eu(0.37, 0.21, -0.13), ev(-0.11, 0.29, 0.17);
@@ -497,7 +498,7 @@ TEST(FrameworkLightSet, BatchedShadowRaysAreSpawnRayToBitForBit) {
   const LightSet course_lights(course), near_lights(near), far_lights(far);
   const LightSet* sets[] = {&course_lights, &near_lights, &far_lights};
   Rng rng(21, 8);
-  long made = 0, tried[9] = {}, changed[9] = {};
+  long made = 0, tried[10] = {}, changed[10] = {};
   for (int i = 0; i < 6000; ++i) {
     SurfaceHit at = point_around_the_panel(rng, i);
     at.ng = square_to_uniform_sphere(rng.next_2d());
@@ -522,7 +523,7 @@ TEST(FrameworkLightSet, BatchedShadowRaysAreSpawnRayToBitForBit) {
         // One input changed: the ray must be the one made from the inputs as they now are.
         LightSample other = ls;
         SurfaceHit from = at;
-        switch ((i + j) % 9) {
+        switch ((i + j) % 10) {
           case 0: other.wi = -other.wi; break;  // the other side of both ends
           case 1: other.p.x += 0.01f; break;
           case 2: other.p_error *= 4.0f, other.p_error += glm::vec3(1e-4f); break;
@@ -531,13 +532,14 @@ TEST(FrameworkLightSet, BatchedShadowRaysAreSpawnRayToBitForBit) {
           case 5: from.p.y += 0.01f; break;
           case 6: from.p_error *= 4.0f, from.p_error += glm::vec3(1e-4f); break;
           case 7: from.ng = glm::normalize(from.ng + glm::vec3(0.2f, 0.3f, -0.1f)); break;
+          case 8: from.ng.z += 0.5f; break;
           default: other.n.z += 0.5f; break;
         }
         const Ray fresh = shadow_ray_by_definition(from, other);
         ASSERT_TRUE(same_ray(spawn_shadow_ray(from, other), fresh))
-            << "point " << i << ", sample " << j << ", change " << (i + j) % 9;
-        ++tried[(i + j) % 9];
-        changed[(i + j) % 9] += !same_ray(fresh, want);
+            << "point " << i << ", sample " << j << ", change " << (i + j) % 10;
+        ++tried[(i + j) % 10];
+        changed[(i + j) % 10] += !same_ray(fresh, want);
       }
     }
   }
@@ -546,7 +548,7 @@ TEST(FrameworkLightSet, BatchedShadowRaysAreSpawnRayToBitForBit) {
   // A check that could not fail would hand out rays that equal the fresh ones anyway: each
   // change must make another ray for most samples (a changed normal does not where the point's
   // error box is empty).
-  for (int c = 0; c < 9; ++c) EXPECT_GT(changed[c], tried[c] / 2) << "change " << c;
+  for (int c = 0; c < 10; ++c) EXPECT_GT(changed[c], tried[c] / 2) << "change " << c;
 }
 
 // A quad that is a parallelogram only to rounding (turned about two axes, far from the origin,
