@@ -1,6 +1,7 @@
 // LightSampler: whatever an estimate draws, every sample it is given is LightSet::sample's for
-// the light, point and numbers it passed; it foresees the numbers of an estimate that draws them
-// one sample after another, and stops foreseeing for one that draws otherwise.
+// the light, point and numbers it passed, and spawn_shadow_ray gives spawn_ray_to's ray for it; it
+// foresees the numbers of an estimate that draws them one sample after another, and stops
+// foreseeing for one that draws otherwise.
 #include "framework/lights/light_sampler.h"
 
 #include <gtest/gtest.h>
@@ -44,8 +45,9 @@ SurfaceHit hit_at(const glm::vec3& p) {
 enum class Draws { one_pair_a_sample, an_extra_number_between, its_own_generator };
 
 /// An estimate's light loop over `points`: `per_light` samples of each light from each point,
-/// drawn as `draws` says; every sample checked against LightSet::sample. Returns the sampler's
-/// counts of calls answered ahead and samples made in vain.
+/// drawn as `draws` says; every sample checked against LightSet::sample, and its shadow ray
+/// against spawn_ray_to's; counts the samples that carried their ray into `shadow_rays_made`.
+/// Returns the sampler's counts of calls answered ahead and samples made in vain.
 std::pair<int, int> run_loop(const LightSet& set, int per_light, Draws draws, int points,
                              int* shadow_rays_made = nullptr) {
   Rng rng(5, 9), own(77, 1);
