@@ -45,8 +45,7 @@ inline V3x2 dot_each(V3x2 a, V3x2 b) {
 // bits are the ones offset_origin gives it (the flip of the offset is a sign flip either way).
 [[gnu::always_inline]] inline V3x2 offset_origins(V3x2 p, V3x2 p_error, V3x2 n, V3x2 w) {
   const V3x2 zero = _mm256_setzero_ps(), sign = _mm256_set1_ps(-0.0f);
-  const V3x2 abs_n = _mm256_blendv_ps(_mm256_xor_ps(n, sign), n, _mm256_cmp_ps(n, zero, _CMP_GE_OQ));
-  V3x2 offset = _mm256_mul_ps(dot_each(abs_n, p_error), n);
+  V3x2 offset = _mm256_mul_ps(dot_each(glm_abs(n), p_error), n);
   const V3x2 flip = _mm256_cmp_ps(dot_each(w, n), zero, _CMP_LT_OQ);
   offset = _mm256_xor_ps(offset, _mm256_and_ps(flip, sign));
   return round_away(_mm256_add_ps(p, offset), offset);

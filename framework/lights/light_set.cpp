@@ -395,10 +395,7 @@ void sample_quad8(const SampledLight& l, const glm::vec3& p, const glm::vec2 u[8
     // The target: the light's point offset off it towards the shading point (-wi), or the point
     // itself where the light has no normal.
     const __m256 ln[3] = {second[6], second[7], nz};
-    auto glm_abs8 = [&](__m256 x) {  // glm::abs: x >= 0 ? x : -x (so -0 stays -0)
-      return _mm256_blendv_ps(_mm256_xor_ps(x, sign), x, _mm256_cmp_ps(x, zero, _CMP_GE_OQ));
-    };
-    const __m256 abs_ln[3] = {glm_abs8(ln[0]), glm_abs8(ln[1]), glm_abs8(ln[2])};
+    const __m256 abs_ln[3] = {glm_abs(ln[0]), glm_abs(ln[1]), glm_abs(ln[2])};
     const __m256 spread = dot8(abs_ln, second + 3);
     const __m256 minus_w[3] = {_mm256_xor_ps(w[0], sign), _mm256_xor_ps(w[1], sign),
                                _mm256_xor_ps(w[2], sign)};

@@ -198,19 +198,23 @@ class LightSet {
 
 /// Whether ls's ahead_ray was made from ls's fields and `hit` as they are now, to the bit.
 inline bool shadow_ray_made_for(const SurfaceHit& hit, const LightSample& ls) {
-  static_assert(sizeof(LightSample) == 56 * sizeof(float) && offsetof(LightSample, ahead_ray) == 96 &&
-                    offsetof(SurfaceHit, p) == 4 && offsetof(SurfaceHit, ng) == 28,
-                "ahead_made and ahead_from are copies of LightSample's and SurfaceHit's bytes");
+  static_assert(sizeof(ls.ahead_made) == offsetof(LightSample, n) + 2 * sizeof(float) &&
+                    sizeof(ls.ahead_from) == offsetof(SurfaceHit, ng) + 2 * sizeof(float) -
+                                                 offsetof(SurfaceHit, p),
+                "ahead_made copies the sample's bytes up to n.y, ahead_from the point's p to ng.y");
   const char* s = reinterpret_cast<const char*>(&ls);
-  const char* h = reinterpret_cast<const char*>(&hit);
+  const char* made = reinterpret_cast<const char*>(ls.ahead_made);
+  const char* h = reinterpret_cast<const char*>(&hit) + offsetof(SurfaceHit, p);
+  const char* from = reinterpret_cast<const char*>(ls.ahead_from);
 #if defined(__AVX2__)
   auto at = [](const char* b) { return _mm256_loadu_si256(reinterpret_cast<const __m256i*>(b)); };
   const __m256i differ = _mm256_or_si256(
-      _mm256_or_si256(_mm256_xor_si256(at(s), at(s + 128)), _mm256_xor_si256(at(s + 32), at(s + 160))),
-      _mm256_xor_si256(at(h + 4), at(s + 192)));
+      _mm256_or_si256(_mm256_xor_si256(at(s), at(made)), _mm256_xor_si256(at(s + 32), at(made + 32))),
+      _mm256_xor_si256(at(h), at(from)));
   if (!_mm256_testz_si256(differ, differ)) return false;
 #else
-  if (std::memcmp(s, s + 128, 64) != 0 || std::memcmp(h + 4, s + 192, 32) != 0) return false;
+  if (std::memcmp(s, made, sizeof(ls.ahead_made)) != 0 || std::memcmp(h, from, sizeof(ls.ahead_from)) != 0)
+    return false;
 #endif
   return std::memcmp(&ls.n.z, &ls.ahead_n_z, 4) == 0 && std::memcmp(&hit.ng.z, &ls.ahead_ng_z, 4) == 0;
 }

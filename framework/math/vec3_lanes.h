@@ -12,6 +12,9 @@
 #ifdef __SSE4_1__
 #include <smmintrin.h>
 #endif
+#ifdef __AVX__
+#include <immintrin.h>
+#endif
 
 #if PT_SSE2
 namespace pt::lanes {
@@ -58,6 +61,13 @@ inline V3 select(V3 mask, V3 a, V3 b) {
 }
 /// glm::abs: x >= 0 ? x : -x, lane by lane (so -0 stays -0, and a NaN changes sign, as there).
 inline V3 glm_abs(V3 x) { return select(_mm_cmpge_ps(x, _mm_setzero_ps()), x, neg(x)); }
+#ifdef __AVX__
+/// glm_abs on eight lanes (two points, or one coordinate of eight).
+inline __m256 glm_abs(__m256 x) {
+  return _mm256_blendv_ps(_mm256_xor_ps(x, _mm256_set1_ps(-0.0f)), x,
+                          _mm256_cmp_ps(x, _mm256_setzero_ps(), _CMP_GE_OQ));
+}
+#endif
 /// offset_ray_origin's last step (float_error.h), lane by lane and to the bit: v moved to the next
 /// float up where `offset` > 0 and down where it is < 0, left where it is 0 or NaN. Up: +inf
 /// stays, ±0 steps to the smallest denormal, anything else (NaN included) moves one unit in its
