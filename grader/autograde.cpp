@@ -24,6 +24,7 @@
 #include "grader/handout.h"
 #include "grader/manifest.h"
 #include "grader/report.h"
+#include "grader/scene_variant.h"
 
 namespace fs = std::filesystem;
 
@@ -40,8 +41,9 @@ void write_file(const fs::path& path, const std::string& text, fs::perms mode) {
 }
 
 /// Sets `dir`'s folders to `dirs` and its files to `files` (`executables` for files with an
-/// execute bit), links untouched.
-void set_modes(const fs::path& dir, fs::perms dirs, fs::perms files, fs::perms executables) {
+/// execute bit), links untouched, and nothing under `skip` (the build tree's secret folder).
+void set_modes(const fs::path& dir, fs::perms dirs, fs::perms files, fs::perms executables,
+               const fs::path& skip = {}) {
   auto apply = [&](const fs::path& p) {
     struct stat st;
     if (lstat(p.c_str(), &st) != 0 || S_ISLNK(st.st_mode)) return;
@@ -52,8 +54,56 @@ void set_modes(const fs::path& dir, fs::perms dirs, fs::perms files, fs::perms e
   };
   apply(dir);
   std::error_code ec;
-  for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+  for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    if (!skip.empty() && it->path() == skip) {
+      it.disable_recursion_pending();
+      continue;
+    }
     apply(it->path());
+  }
+}
+
+/// The build tree's folder of everything that holds the complete solution's code or judges the
+/// student's (grader/CMakeLists.txt): never the student's user's, never readable by it.
+fs::path secret_of(const AutogradeLayout& L) { return L.build / "secret"; }
+
+/// Locks the secret folder: reachable (0711) so the student's user can run the part's probes
+/// inside, everything in it the grader's alone (folders 0700, files 0600, programs 0700) but the
+/// programs `runnable`, which that user may run and not read (0711).
+void lock_secret(const AutogradeLayout& L, const std::vector<std::string>& runnable) {
+  const fs::path secret = secret_of(L);
+  give_tree(secret, 0, 0);
+  set_modes(secret, fs::perms(0700), fs::perms(0600), fs::perms(0700));
+  fs::permissions(secret, fs::perms(0711));
+  for (const std::string& name : runnable) {
+    std::error_code ec;
+    if (fs::exists(secret / name, ec)) fs::permissions(secret / name, fs::perms(0711), ec);
+  }
+}
+
+/// The programs of part `part` that run the student's code with the solution's other parts
+/// (its probes and its isolated renderer): linked for its grading alone, removed after it, so that
+/// no part's code can ever run another part's.
+std::vector<std::string> part_programs(const AutogradeLayout& L, int part) {
+  std::vector<std::string> names;
+  const std::string probe = "probe_part" + std::to_string(part) + "_";
+  std::error_code ec;
+  for (const fs::directory_entry& e : fs::directory_iterator(secret_of(L), ec)) {
+    std::string n = e.path().filename().string();
+    if (n.rfind(probe, 0) == 0) names.push_back(n);
+  }
+  if (fs::exists(secret_of(L) / ("pathtracer_isolated" + std::to_string(part)), ec))
+    names.push_back("pathtracer_isolated" + std::to_string(part));
+  return names;
+}
+
+void remove_part_programs(const AutogradeLayout& L) {
+  std::error_code ec;
+  for (const fs::directory_entry& e : fs::directory_iterator(secret_of(L), ec)) {
+    std::string n = e.path().filename().string();
+    if (n.rfind("probe_part", 0) == 0 || n.rfind("pathtracer_isolated", 0) == 0)
+      fs::remove(e.path(), ec);
+  }
 }
 
 std::vector<std::string> read_lines(const fs::path& path) {
@@ -62,21 +112,6 @@ std::vector<std::string> read_lines(const fs::path& path) {
   for (std::string l; std::getline(in, l);)
     if (!l.empty()) lines.push_back(l);
   return lines;
-}
-
-std::vector<TrustedTest> read_trusted(const fs::path& path) {
-  nlohmann::json j = nlohmann::json::parse(read_text_file(path));
-  std::vector<TrustedTest> all;
-  for (const nlohmann::json& e : j) {
-    TrustedTest t;
-    t.name = e.at("name");
-    t.part = e.at("part");
-    t.step = e.at("step");
-    t.executable = e.at("executable");
-    t.gtest = e.at("gtest");
-    all.push_back(t);
-  }
-  return all;
 }
 
 std::string excerpt(const std::string& output, size_t lines = 15) {
@@ -93,23 +128,22 @@ std::string excerpt(const std::string& output, size_t lines = 15) {
   return s;
 }
 
-/// Builds part `part`'s grading target from the student's files, as the sandbox's user: the
-/// compiler, and the test listing CMake runs after a link, never run as root, so the student's
-/// code cannot read at build time what the grader protects (an #include or .incbin of a
-/// reference or of the solution fails). The tree is the student user's while it builds, the
-/// grader's (read-only to that user, files 0600, programs 0711) afterwards.
 /// Whether the student's build of a part succeeded, and its error excerpt when not.
 struct BuildOutcome {
   bool ok = false;
   std::string output;
 };
 
+/// Compiles part `part`'s files as the sandbox's user, and nothing else: the build tree is that
+/// user's while it compiles (all but the secret folder, which it cannot even list), so an
+/// #include, .incbin or __has_include of anything the grader protects fails at compile time.
+/// No code of the student's runs during a build. Then the grader, as itself, links the part's
+/// probes and isolated renderer in the secret folder, refusing if the link would compile
+/// anything (the grader never compiles a student's file with its own rights).
 BuildOutcome student_build(int part, const AutogradeLayout& L, const Sandbox& sandbox,
                            double timeout, int jobs) {
   BuildOutcome r;
-  std::string target = "grade_part" + std::to_string(part);
-  if (read_text_file(L.build / "build.ninja").find(target + "_isolated") != std::string::npos)
-    target += "_isolated";
+  const std::string objects = "pt_part" + std::to_string(part) + "_obj";
   std::string scratch = sandbox.make_scratch("build");
   ChildOptions o = sandbox.options(scratch, timeout);
   o.limits.wall_seconds = timeout;  // the build's own limit, never a test run's cap
@@ -118,29 +152,62 @@ BuildOutcome student_build(int part, const AutogradeLayout& L, const Sandbox& sa
   o.limits.file_size = size_t(1) << 30;
   o.limits.disk_bytes = size_t(4) << 30;
   o.environment.push_back("CCACHE_DISABLE=1");
-  give_tree(L.build, sandbox.uid, sandbox.gid);
-  set_modes(L.build, fs::perms(0755), fs::perms(0644), fs::perms(0755));
-  ChildResult c = run_child({"cmake", "--build", L.build.string(), "--target", target, "-j",
+  const fs::path secret = secret_of(L);
+  // The tree but its secret folder becomes the student's user's while it compiles.
+  auto give = [&](long uid, long gid) {
+    lchown(L.build.c_str(), uid_t(uid), gid_t(gid));
+    std::error_code ec;
+    for (fs::recursive_directory_iterator it(L.build, ec), end; !ec && it != end; it.increment(ec)) {
+      if (it->path() == secret) {
+        it.disable_recursion_pending();
+        continue;
+      }
+      lchown(it->path().c_str(), uid_t(uid), gid_t(gid));
+    }
+  };
+  if (sandbox.protects()) give(sandbox.uid, sandbox.gid);
+  set_modes(L.build, fs::perms(0755), fs::perms(0644), fs::perms(0755), secret);
+  ChildResult c = run_child({"cmake", "--build", L.build.string(), "--target", objects, "-j",
                              std::to_string(std::max(1, jobs))}, o);
-  give_tree(L.build, 0, 0);
-  set_modes(L.build, fs::perms(0711), fs::perms(0600), fs::perms(0711));
+  if (sandbox.protects()) give(0, 0);
+  set_modes(L.build, fs::perms(0711), fs::perms(0600), fs::perms(0711), secret);
   // A shared library is read by the loader (dlopen maps it): the image module, which every
   // render and image test loads, holds no solution, so it stays readable.
   std::error_code ec;
   for (fs::recursive_directory_iterator it(L.build, ec), end; !ec && it != end; it.increment(ec)) {
+    if (it->path() == secret) {
+      it.disable_recursion_pending();
+      continue;
+    }
     std::string name = it->path().filename().string();
     if (it->is_regular_file() && !it->is_symlink() && name.size() > 3 &&
         name.compare(name.size() - 3, 3, ".so") == 0)
       fs::permissions(it->path(), fs::perms(0755), ec);
   }
   sandbox.finish(scratch);
-  r.ok = c.ok();
-  if (!r.ok) {
+  if (!c.ok()) {
     // Paths as the student knows them: relative to the project.
     std::string text = excerpt(c.output), prefix = L.project.string() + "/";
     for (size_t at; (at = text.find(prefix)) != std::string::npos;) text.erase(at, prefix.size());
     r.output = "your code did not build (the build " + c.describe() + "):\n" + text;
+    return r;
   }
+  // The link, as the grader: only objects, never a compile.
+  const std::string programs = "probes_part" + std::to_string(part);
+  ChildResult plan = run_child({"ninja", "-C", L.build.string(), "-n", programs}, 120.0);
+  if (!plan.ok() || plan.output.find("Building C") != std::string::npos) {
+    r.output = "the grader would have had to compile code to link your part (it refuses to): " +
+               (plan.ok() ? excerpt(plan.output, 5) : plan.describe());
+    return r;
+  }
+  ChildResult link = run_child({"cmake", "--build", L.build.string(), "--target", programs, "-j",
+                                std::to_string(std::max(1, jobs))}, timeout);
+  if (!link.ok()) {
+    r.output = "your part's objects did not link (" + link.describe() + "):\n" + excerpt(link.output);
+    return r;
+  }
+  lock_secret(L, part_programs(L, part));
+  r.ok = true;
   return r;
 }
 
@@ -179,33 +246,7 @@ void give_tree(const fs::path& dir, long uid, long gid) {
   for (const fs::directory_entry& e : fs::recursive_directory_iterator(dir)) give(e.path());
 }
 
-std::vector<TrustedTest> list_part_tests(const fs::path& build_dir, int part) {
-  std::vector<TrustedTest> all;
-  for (const std::string& label : {"part" + std::to_string(part) + "_isolated", "part" + std::to_string(part)}) {
-    ChildResult c = run_child({"ctest", "--test-dir", build_dir.string(), "--show-only=json-v1", "-L",
-                               "^" + label + "$"},
-                              120.0, {}, 64 << 20, ChildStreams::separate);
-    if (!c.ok()) throw std::runtime_error("ctest cannot list the tests of " + build_dir.string() + ": " + c.describe());
-    nlohmann::json j = nlohmann::json::parse(c.output);
-    for (const nlohmann::json& t : j.value("tests", nlohmann::json::array())) {
-      TrustedTest r;
-      r.name = t.value("name", "");
-      if (r.name.rfind("isolated.", 0) == 0) r.name = r.name.substr(9);
-      if (std::sscanf(r.name.c_str(), "part%d.step%d.", &r.part, &r.step) != 2) continue;
-      std::vector<std::string> command = t.value("command", std::vector<std::string>{});
-      if (command.empty()) continue;
-      r.executable = command[0];
-      for (const std::string& arg : command)
-        if (arg.rfind("--gtest_filter=", 0) == 0) r.gtest = arg.substr(15);
-      if (r.gtest.empty()) continue;
-      all.push_back(r);
-    }
-    if (!all.empty()) break;
-  }
-  return all;
-}
-
-void autograde_setup(const std::string& root, const std::string& grader_exe) {
+void autograde_setup(const std::string& root, const std::string& grader_exe, int jobs) {
   AutogradeLayout L = AutogradeLayout::under(root);
   fs::create_directories(L.private_dir);
   std::vector<std::string> files = student_files(L.project.string());
@@ -215,14 +256,6 @@ void autograde_setup(const std::string& root, const std::string& grader_exe) {
   write_file(L.student_list(), list, fs::perms(0600));
   for (const std::string& f : files)
     write_file(L.stubs() / f, strip_solution(read_text_file(L.project / f), f), fs::perms(0644));
-  // The test list of the complete solution, before any student code is built.
-  nlohmann::json tests = nlohmann::json::array();
-  Manifest manifest = read_manifest((L.project / "reference" / "manifest.json").string());
-  for (const PartSpec& spec : manifest.parts)
-    for (const TrustedTest& t : list_part_tests(L.build, spec.part))
-      tests.push_back({{"name", t.name}, {"part", t.part}, {"step", t.step},
-                       {"executable", t.executable}, {"gtest", t.gtest}});
-  write_file(L.test_list(), tests.dump(1) + "\n", fs::perms(0600));
   fs::copy_file(grader_exe, L.grader(), fs::copy_options::overwrite_existing);
   fs::permissions(L.grader(), fs::perms(0700));
   // The tree keeps no solution the student's user can read: the stubs take the student files'
@@ -238,6 +271,26 @@ void autograde_setup(const std::string& root, const std::string& grader_exe) {
         is_solution_only(read_text_file(e.path())))
       fs::permissions(e.path(), fs::perms(0600));
   }
+  // What grading runs, built now with the stubs in the part folders: the judges (no student
+  // code), the complete solution's renderer (the references of the renders' variants), and every
+  // object a part's probes link, so that a submission's build compiles its own files only. The
+  // solution's objects are compiled from the private copy into the secret folder.
+  std::vector<std::string> targets = {"pathtracer_solution"};
+  Manifest manifest = read_manifest((L.project / "reference" / "manifest.json").string());
+  for (const PartSpec& spec : manifest.parts) {
+    targets.push_back("judges_part" + std::to_string(spec.part));
+    targets.push_back("probes_part" + std::to_string(spec.part));
+  }
+  std::vector<std::string> argv = {"cmake", "--build", L.build.string(), "-j",
+                                   std::to_string(std::max(1, jobs)), "--target"};
+  argv.insert(argv.end(), targets.begin(), targets.end());
+  ChildResult built = run_child(argv, 7200.0);
+  if (!built.ok())
+    throw std::runtime_error("the grading programs do not build (" + built.describe() + "):\n" +
+                             excerpt(built.output, 30));
+  // No part's probes wait in the tree between gradings: each part's are linked for it alone.
+  remove_part_programs(L);
+  lock_secret(L, {});
   // The references and the manifest: the grader's alone (the renders are compared by it).
   set_modes(L.project / "reference", fs::perms(0700), fs::perms(0600), fs::perms(0600));
   // The private folder: reachable (the build stats the solution copy's files, whose names are
@@ -249,8 +302,8 @@ void autograde_setup(const std::string& root, const std::string& grader_exe) {
   fs::permissions(L.results.parent_path(), fs::perms(0700));
   fs::create_directories(L.scratch);
   fs::permissions(L.scratch, fs::perms(0711));
-  std::cerr << "autograde-setup: " << files.size() << " student files, " << tests.size()
-            << " tests listed, private folder " << L.private_dir << "\n";
+  std::cerr << "autograde-setup: " << files.size() << " student files, grading programs built, "
+            << "private folder " << L.private_dir << "\n";
 }
 
 int autograde(const std::string& root, const std::vector<int>& parts,
@@ -273,7 +326,6 @@ int autograde(const std::string& root, const std::vector<int>& parts,
     sandbox.jobs = tuning.jobs > 0 ? tuning.jobs : int(std::max(1u, std::thread::hardware_concurrency()));
     if (tuning.disk_bytes > 0) sandbox.limits.disk_bytes = tuning.disk_bytes;
     Manifest manifest = read_manifest((L.project / "reference" / "manifest.json").string());
-    std::vector<TrustedTest> trusted = read_trusted(L.test_list());
     GradeOptions options;
     options.source_dir = L.project.string();
     options.build_dir = L.build.string();
@@ -281,11 +333,18 @@ int autograde(const std::string& root, const std::vector<int>& parts,
     options.pathtracer = (L.build / "app" / "pathtracer").string();
     // Renders and diff images: a folder of this run's own (runs of grader batch go side by side).
     options.out_dir = (L.private_dir / ("out-" + std::to_string(tuning.slot))).string();
+    // The records, the variants and their references: the grader's alone, whatever the umask.
+    fs::create_directories(options.out_dir);
+    fs::permissions(options.out_dir, fs::perms(0700));
     options.build = false;  // built below, as the student's user
     options.isolated = true;
     options.isolated_separate = true;
     options.sandbox = &sandbox;
-    options.trusted = &trusted;
+    // Each graded render is of a scene variant drawn now; its reference is rendered now, by the
+    // complete solution's renderer, which the student's user can neither read nor run.
+    options.reference_renderer = (secret_of(L) / "pathtracer_solution").string();
+    options.variant_key = draw_variant_key();
+    remove_part_programs(L);
     std::vector<PartResult> all;
     for (const PartSpec& spec : manifest.parts) {
       if (!parts.empty() && std::find(parts.begin(), parts.end(), spec.part) == parts.end())
@@ -295,7 +354,9 @@ int autograde(const std::string& root, const std::vector<int>& parts,
       if (built.ok) {
         std::cerr << "autograde: part " << spec.part << ": grading\n";
         all.push_back(grade_part(manifest, spec.part, options));
+        remove_part_programs(L);
       } else {
+        remove_part_programs(L);
         PartResult r;
         r.part = spec.part;
         r.built = false;

@@ -28,20 +28,15 @@ struct AutogradeLayout {
   std::filesystem::path stubs() const { return private_dir / "stubs"; }
   std::filesystem::path grader() const { return private_dir / "grader"; }
   std::filesystem::path student_list() const { return private_dir / "student_files.txt"; }
-  std::filesystem::path test_list() const { return private_dir / "tests.json"; }
 };
 
-/// The graded tests of part `part` in a build tree (label partN_isolated where the build has
-/// isolated targets, else partN; never the stress ones), from CTest's own list of the tests and
-/// their commands. Only on the complete solution's build, before any student code is built: a
-/// student's code runs at the discovery of its tests and could list anything.
-std::vector<TrustedTest> list_part_tests(const std::filesystem::path& build_dir, int part);
-
-/// After the instructor's tree is built: writes the student-file list, the stubs, the trusted
-/// test list and a copy of `grader_exe` to the private folder, puts the stubs in place of the
-/// solution in the tree, and sets the permissions that keep the references, the manifest, the
-/// solution and the results from the student's user. Throws std::runtime_error on a failure.
-void autograde_setup(const std::string& root, const std::string& grader_exe);
+/// After the instructor's tree is configured and its grader built: writes the student-file list,
+/// the stubs and a copy of `grader_exe` to the private folder, puts the stubs in place of the
+/// solution in the tree, builds what grading runs (the judges, the complete solution's renderer
+/// and every object the probes link) with `jobs` jobs, and sets the permissions that keep the
+/// references, the manifest, the solution, the judges and the results from the student's user.
+/// Throws std::runtime_error on a failure.
+void autograde_setup(const std::string& root, const std::string& grader_exe, int jobs);
 
 /// How one run of `grader autograde` differs from Gradescope's: tighter limits for a test run
 /// of the bundle (CI's cheater cases), and where `grader batch` puts a submission's run. Every

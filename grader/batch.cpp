@@ -15,7 +15,7 @@
 #include <mutex>
 #include <thread>
 
-#include "framework/process/child_process.h"
+#include "grader/process/child_process.h"
 #include "framework/text/text_file.h"
 
 namespace fs = std::filesystem;
@@ -83,7 +83,7 @@ int grade_batch(const BatchOptions& options) {
   auto start = std::chrono::steady_clock::now();
   AutogradeLayout L = AutogradeLayout::under(options.root);
   fs::path dir = fs::absolute(options.submissions);
-  if (!fs::is_regular_file(L.test_list()) || !fs::is_regular_file(L.grader())) {
+  if (!fs::is_regular_file(L.student_list()) || !fs::is_regular_file(L.grader())) {
     std::cerr << "grader batch: " << L.root.string()
               << " is not set up (run the bundle's setup.sh with PT_AUTOGRADER_ROOT there first)\n";
     return 2;

@@ -9,7 +9,7 @@
 #include <map>
 #include <stdexcept>
 
-#include "framework/process/child_process.h"
+#include "grader/process/child_process.h"
 #include "framework/text/text_file.h"
 #include "grader/handout.h"
 

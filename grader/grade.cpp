@@ -19,10 +19,12 @@
 
 #include "framework/image/estimate_exr.h"
 #include "framework/image/image.h"
-#include "framework/process/child_process.h"
+#include "grader/process/child_process.h"
 #include "framework/stats/variance_consistency.h"
 #include "grader/compare.h"
+#include "grader/judged_tests.h"
 #include "grader/reference_mean.h"
+#include "grader/scene_variant.h"
 
 namespace fs = std::filesystem;
 
@@ -88,6 +90,19 @@ std::string first_failure(const std::string& output) {
   return "";
 }
 
+// What a check's message may hold: the judge's own words whole up to a length, and of the
+// student's output only a few short "not implemented" lines (docs/grading.md, "What reaches the
+// student").
+constexpr size_t kCheckMessageChars = 1200;
+constexpr int kStudentLinesPerCheck = 3;
+constexpr size_t kStudentLineChars = 160;
+
+/// `text` cut to at most `limit` characters, saying so.
+std::string bounded(const std::string& text, size_t limit) {
+  if (text.size() <= limit) return text;
+  return text.substr(0, limit) + " [...]";
+}
+
 /// The project's relative name for a path the compiler wrote absolutely.
 std::string relative_to(const std::string& text, const std::string& root) {
   std::string r = text, prefix = fs::weakly_canonical(root).string() + "/";
@@ -110,63 +125,77 @@ std::string part_target(int part, const GradeOptions& options) {
   return "grade_part" + std::to_string(part) + (options.isolated ? "_isolated" : "");
 }
 
-std::string part_label(int part, const GradeOptions& options) {
-  return "^part" + std::to_string(part) + (options.isolated && options.isolated_separate ? "_isolated" : "") + "$";
-}
+std::string part_label(int part) { return "^part" + std::to_string(part) + "$"; }
 
 std::string pathtracer_for(int part, const GradeOptions& options) {
   if (!(options.isolated && options.isolated_separate)) return options.pathtracer;
-  return (fs::path(options.pathtracer).parent_path() /
-          ("pathtracer_isolated" + std::to_string(part))).string();
+  return (fs::path(options.build_dir) / "secret" / ("pathtracer_isolated" + std::to_string(part)))
+      .string();
 }
 
-/// Runs part N's step tests through CTest (each its own process and time limit) and returns
-/// one check per test, in the order CTest reports them.
-/// Part N's trusted tests, each alone in a process of its own in the sandbox (up to its `jobs`
-/// at once), judged by its sealed report (never by an exit code or printed lines). A skip is a failure here: the bundle has every course scene, so
-/// no test of the complete solution skips, and a skip must not shrink the denominator.
-std::vector<CheckResult> run_sealed_tests(int part, const PartSpec& spec,
-                                          const GradeOptions& options) {
-  std::vector<const TrustedTest*> mine;
-  std::vector<SealedRun> runs;
-  for (const TrustedTest& t : *options.trusted) {
-    if (t.part != part) continue;
-    mine.push_back(&t);
-    runs.push_back({t.executable, t.gtest, load_scaled_limit(spec.test_timeout)});
-  }
-  std::vector<SealedTest> sealed = pt::grader::run_sealed_tests(runs, *options.sandbox);
+/// What of the student's own output a check's message may carry: its "not implemented" lines,
+/// a few and cut short, never more (a message is no channel out of the grader).
+std::string student_lines(const std::string& output) {
+  std::string s;
+  int n = 0;
+  std::istringstream in(not_implemented_lines(output));
+  for (std::string line; std::getline(in, line) && n < kStudentLinesPerCheck; ++n)
+    s += bounded(line, kStudentLineChars) + "\n";
+  return s;
+}
+
+/// Part N's step tests, each run as a probe of the student's code and decided by its judge
+/// (grader/judged_tests.h): in the sandbox when the bundle grades, else as the grader's user.
+std::vector<CheckResult> run_judged(int part, const PartSpec& spec, const GradeOptions& options,
+                                    std::string* problem) {
   std::vector<CheckResult> checks;
-  for (size_t i = 0; i < mine.size(); ++i) {
-    const TrustedTest& t = *mine[i];
-    const SealedTest& s = sealed[i];
+  const std::string judge_build = options.judge_build_dir.empty() ? options.build_dir
+                                                                  : options.judge_build_dir;
+  std::vector<JudgedTest> tests;
+  try {
+    tests = list_judged_tests(part, options.build_dir, judge_build);
+  } catch (const std::exception& e) {
+    *problem = std::string("the tests of part ") + std::to_string(part) + " cannot be listed: " + e.what();
+    return checks;
+  }
+  Sandbox local;
+  if (!options.sandbox) {
+    local.scratch_root = (fs::absolute(options.out_dir) / "scratch").string();
+    fs::create_directories(local.scratch_root);
+    local.jobs = int(std::max(1u, std::thread::hardware_concurrency()));
+  }
+  const Sandbox& sandbox = options.sandbox ? *options.sandbox : local;
+  double limit = load_scaled_limit(spec.test_timeout);
+  if (sandbox.max_check_seconds > 0.0) limit = std::min(limit, sandbox.max_check_seconds);
+  const std::string work = (fs::absolute(options.out_dir) / "records").string();
+  std::vector<JudgedOutcome> outcomes = run_judged_tests(tests, sandbox, limit, work);
+  for (size_t i = 0; i < tests.size(); ++i) {
     CheckResult r;
     r.kind = "test";
-    r.name = t.name;
-    r.seconds = s.seconds;
-    r.pass = s.status == SealedStatus::passed;
-    if (s.status == SealedStatus::skipped) {
-      r.output = "skipped, which counts as a failure here";
-    } else if (!r.pass) {
-      std::string f = first_failure(s.output);
-      r.output = relative_to(s.why == "failed" && !f.empty() ? f : s.why, options.source_dir);
-      std::string todo = not_implemented_lines(s.output);
+    r.name = tests[i].name;
+    r.seconds = outcomes[i].seconds;
+    r.pass = outcomes[i].pass;
+    if (!r.pass) {
+      r.output = bounded(relative_to(outcomes[i].message, options.source_dir), kCheckMessageChars);
+      std::string todo = student_lines(outcomes[i].student_output);
       if (!todo.empty()) r.output += "\n" + todo;
     }
     checks.push_back(r);
   }
+  if (tests.empty()) *problem = "part " + std::to_string(part) + " has no judged tests in " + judge_build;
   return checks;
 }
 
 std::vector<CheckResult> run_tests(int part, const PartSpec& spec, const GradeOptions& options,
                                    std::string* problem) {
-  if (options.sandbox && options.trusted) return run_sealed_tests(part, spec, options);
+  if (has_judges(options.build_dir, part)) return run_judged(part, spec, options, problem);
   std::vector<CheckResult> checks;
   fs::path junit = fs::absolute(options.out_dir) / ("part" + std::to_string(part) + "-tests.xml");
   fs::remove(junit);
   char timeout[32];
   std::snprintf(timeout, sizeof timeout, "%.0f", std::ceil(load_scaled_limit(spec.test_timeout)));
   // The whole run has a time limit too, so that even a wedged ctest cannot stop the grader.
-  ChildResult c = run_child({"ctest", "--test-dir", options.build_dir, "-L", part_label(part, options),
+  ChildResult c = run_child({"ctest", "--test-dir", options.build_dir, "-L", part_label(part),
                              "--timeout", timeout, "--output-junit", junit.string(), "-j2"},
                             spec.build_timeout);
   pugi::xml_document doc;
@@ -337,12 +366,27 @@ CheckResult grade_render(const Manifest& manifest, const RenderCheck& check,
     return r;
   }
   fs::path reference = fs::path(options.source_dir) / check.reference;
-  if (!fs::exists(reference)) {
+  const bool variant = !options.reference_renderer.empty();
+  if (variant) {
+    // A variant drawn for this grading, its reference rendered now, in the grader's own folder.
+    const fs::path dir = fs::absolute(options.out_dir) / "variants" / check.name;
+    fs::create_directories(dir);
+    fs::path variant_scene = dir / scene.filename();
+    reference = dir / "reference.exr";
+    try {
+      write_scene_variant(scene.string(), variant_key_for(options.variant_key, check.name),
+                          variant_scene.string());
+    } catch (const std::exception& e) {
+      r.output = std::string("the grader cannot make the scene's variant: ") + e.what();
+      return r;
+    }
+    scene = variant_scene;
+  } else if (!fs::exists(reference)) {
     r.output = "the reference " + reference.string() +
                " is missing: an instructor makes it with `grader --make-reference`";
     return r;
   }
-  try {
+  if (!variant) try {
     std::string sum = file_checksum(reference.string());
     if (sum != check.checksum) {
       r.output = "the reference " + reference.string() + " has checksum " + sum +
@@ -363,6 +407,18 @@ CheckResult grade_render(const Manifest& manifest, const RenderCheck& check,
     // render made it there itself (not a link to a reference).
     scratch = options.sandbox->make_scratch("render");
     out = fs::path(scratch) / (check.name + ".exr");
+    if (variant) {
+      // The render reads its scene from its own folder: the grader's folder stays the grader's.
+      fs::path mine = fs::path(scratch) / scene.filename();
+      fs::copy_file(scene, mine, fs::copy_options::overwrite_existing);
+      if (options.sandbox->protects() &&
+          chown(mine.c_str(), uid_t(options.sandbox->uid), gid_t(options.sandbox->gid)) != 0) {
+        r.output = "the grader cannot hand the render its scene";
+        options.sandbox->finish(scratch);
+        return r;
+      }
+      scene = mine;
+    }
   }
   std::vector<std::string> argv = {pathtracer_for(check.part, options)};
   argv.insert(argv.end(), check.args.begin(), check.args.end());
@@ -390,6 +446,19 @@ CheckResult grade_render(const Manifest& manifest, const RenderCheck& check,
   if (todo.find("part " + std::to_string(check.part) + " not implemented") != std::string::npos) {
     r.output = "the render ran this part's unwritten stubs, so it shows no code of yours:\n" + todo;
     return r;
+  }
+  if (variant) {
+    // The variant's reference, rendered now (only for a render that got this far: a stub's or a
+    // crashed render costs no reference).
+    double seconds = 0.0;
+    const fs::path private_scene = fs::absolute(options.out_dir) / "variants" / check.name /
+                                   scene.filename();
+    std::string why = render_reference(check, options.reference_renderer, private_scene.string(),
+                                       reference.string(), &seconds, false);
+    if (!why.empty()) {
+      r.output = "the grader could not render the reference (not a verdict on your code): " + why;
+      return r;
+    }
   }
   RenderEstimate render, ref;
   if (options.sandbox) {
@@ -483,6 +552,10 @@ PartResult grade_part(const Manifest& manifest, int part, const GradeOptions& op
   }
   std::vector<std::vector<CheckResult>> by_step(spec->steps.size() + 1);
   std::string test_problem;
+  if (options.run_tests && !has_judges(options.build_dir, part))
+    result.rests_on += std::string(result.rests_on.empty() ? "" : "\n") +
+                       "This build has no judges (its linker cannot make probes): the tests' own "
+                       "programs decided them, which is a developer's check, not a grade.";
   if (options.run_tests) {
     for (CheckResult& c : run_tests(part, *spec, options, &test_problem)) {
       int k = step_of(c.name, part);
@@ -610,6 +683,50 @@ void record_state(const PartResult& result, const GradeOptions& options) {
   std::ofstream(fs::path(options.out_dir) / "state.json") << state.dump(2) << "\n";
 }
 
+std::string render_reference(const RenderCheck& check, const std::string& renderer,
+                             const std::string& scene, const std::string& out, double* seconds,
+                             bool verbose) {
+  // One render, or several (seeds reference_seed, +1, ...) whose mean is the reference, made in
+  // a folder of their own (an adaptive render writes its sample-rate image beside it).
+  std::vector<RenderEstimate> runs;
+  const fs::path run_dir = fs::path(out).parent_path() / ("runs-" + check.name);
+  std::error_code made_dir;
+  fs::create_directories(run_dir, made_dir);
+  if (made_dir) return "cannot make " + run_dir.string() + ": " + made_dir.message();
+  struct Cleanup {
+    fs::path dir;
+    ~Cleanup() {
+      std::error_code ignored;
+      fs::remove_all(dir, ignored);
+    }
+  } cleanup{run_dir};
+  for (int k = 0; k < check.reference_runs; ++k) {
+    const fs::path file = run_dir / ("run" + std::to_string(k) + ".exr");
+    std::vector<std::string> argv = {renderer};
+    argv.insert(argv.end(), check.reference_args.begin(), check.reference_args.end());
+    argv.insert(argv.end(), {"--seed", std::to_string(check.reference_seed + uint64_t(k)), "-f",
+                             file.string(), scene});
+    if (verbose) std::cerr << check.name << ": " << command_line(argv) << "\n";
+    ChildResult c = run_child(argv, 3600.0);
+    *seconds += c.seconds;
+    if (!c.ok()) return "the reference render " + c.describe() + "\n" + output_excerpt(c.output);
+    try {
+      runs.push_back(read_estimate_exr(file.string()));  // a reference must carry its variance
+    } catch (const std::exception& e) {
+      return e.what();
+    }
+  }
+  try {
+    if (check.reference_runs == 1)
+      fs::copy_file(run_dir / "run0.exr", out, fs::copy_options::overwrite_existing);
+    else
+      write_estimate_exr(out, mean_of_renders(runs));
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "";
+}
+
 bool make_references(const Manifest& manifest, int part, const GradeOptions& options) {
   bool ok = true;
   for (const PartSpec& p : manifest.parts) {
@@ -625,51 +742,15 @@ bool make_references(const Manifest& manifest, int part, const GradeOptions& opt
       }
       fs::path out = fs::path(options.source_dir) / check.reference;
       fs::create_directories(out.parent_path());
-      // One render, or several (seeds reference_seed, +1, ...) whose mean is the reference,
-      // made in a folder of their own (an adaptive render writes its sample-rate image beside it).
-      std::vector<RenderEstimate> runs;
       double seconds = 0.0;
-      bool failed = false;
-      const fs::path run_dir = fs::temp_directory_path() /
-                               ("pt-reference-" + std::to_string(::getpid()) + "-" + check.name);
-      std::error_code made_dir;
-      fs::create_directories(run_dir, made_dir);
-      if (made_dir) {
-        std::cerr << check.name << ": cannot make " << run_dir << ": " << made_dir.message() << "\n";
-        ok = false;
-        continue;
-      }
-      for (int k = 0; k < check.reference_runs && !failed; ++k) {
-        const fs::path file = run_dir / ("run" + std::to_string(k) + ".exr");
-        std::vector<std::string> argv = {options.pathtracer};
-        argv.insert(argv.end(), check.reference_args.begin(), check.reference_args.end());
-        argv.insert(argv.end(), {"--seed", std::to_string(check.reference_seed + uint64_t(k)), "-f",
-                                 file.string(), scene.string()});
-        std::cerr << check.name << ": " << command_line(argv) << "\n";
-        ChildResult c = run_child(argv, 3600.0);
-        seconds += c.seconds;
-        try {
-          if (!c.ok()) throw std::runtime_error("the reference render " + c.describe() + "\n" +
-                                                output_excerpt(c.output));
-          runs.push_back(read_estimate_exr(file.string()));  // a reference must carry its variance
-        } catch (const std::exception& e) {
-          std::cerr << check.name << ": " << e.what() << "\n";
-          failed = true;
-        }
-      }
-      if (failed) {
-        std::error_code ignored;
-        fs::remove_all(run_dir, ignored);
+      const std::string why = render_reference(check, options.pathtracer, scene.string(),
+                                               out.string(), &seconds, true);
+      if (!why.empty()) {
+        std::cerr << check.name << ": " << why << "\n";
         ok = false;
         continue;
       }
       try {
-        if (check.reference_runs == 1)
-          fs::copy_file(run_dir / "run0.exr", out, fs::copy_options::overwrite_existing);
-        else
-          write_estimate_exr(out.string(), mean_of_renders(runs));
-        std::error_code ignored;
-        fs::remove_all(run_dir, ignored);
         nlohmann::ordered_json made;
         // Paths relative to the project, so the record reads the same on every machine.
         std::string relative_command = "pathtracer " + command_line(check.reference_args) +

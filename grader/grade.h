@@ -64,11 +64,19 @@ struct GradeOptions {
   bool isolated = false;
   bool isolated_separate = false;
   int64_t seed_offset = 0;    ///< every graded render uses seed + seed_offset
-  /// When set (the Gradescope bundle), the student's code runs in it: each test of `trusted`
-  /// alone, judged by its sealed report (grader/sandbox.h), and each render as its user in a
-  /// scratch folder, compared only if its variance is plausible. Else as the grader, by CTest.
+  /// When set (the Gradescope bundle), the student's code runs in it: each test's probe, and
+  /// each render as its user in a scratch folder, compared only if its variance is plausible.
+  /// Else as the grader's own user (a developer's machine: nothing is protected).
   const Sandbox* sandbox = nullptr;
-  const std::vector<TrustedTest>* trusted = nullptr;
+  /// The build tree whose judge programs decide the tests (the bundle's private one, built from
+  /// the complete solution); empty: build_dir's own.
+  std::string judge_build_dir;
+  /// When set, every graded render is of a scene variant drawn for this grading (camera, lights:
+  /// grader/scene_variant.h) and its reference is rendered at grading time by this renderer (the
+  /// complete solution, which the student's user can neither read nor run), with `variant_key`.
+  /// Empty: the manifest's references of the scenes as they are.
+  std::string reference_renderer;
+  uint64_t variant_key = 0;
 };
 
 /// Every step of `part`. Never throws for a student's failure: a crash, a hang or garbage is
@@ -83,6 +91,13 @@ std::string render_rests_on_line(const PartSpec& spec, const RenderCheck& check,
 /// Renders one check as the grader does and compares it with its reference.
 CheckResult grade_render(const Manifest& manifest, const RenderCheck& check,
                          const GradeOptions& options);
+
+/// Renders `check`'s reference of `scene` with `renderer` (its reference_args, reference_runs
+/// seeds from reference_seed, their mean when more than one) into `out`; adds the time taken to
+/// `seconds`. Returns "" or why it failed.
+std::string render_reference(const RenderCheck& check, const std::string& renderer,
+                             const std::string& scene, const std::string& out, double* seconds,
+                             bool verbose);
 
 /// Scores a step from its checks: points shared among the counted ones, the first failure's
 /// message, and the "not implemented" lines of its stubs.

@@ -5,7 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "framework/process/child_process.h"
+#include "grader/process/child_process.h"
 #include "framework/text/text_file.h"
 #include "grader/handout_readme.h"
 

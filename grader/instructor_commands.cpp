@@ -5,7 +5,7 @@
 #include <fstream>
 #include <iostream>
 
-#include "framework/process/child_process.h"
+#include "grader/process/child_process.h"
 #include "grader/false_failures.h"
 #include "grader/manifest.h"
 #include "grader/mutants.h"

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <thread>
 
 #include <CLI/CLI.hpp>
 
@@ -81,6 +82,9 @@ int main(int argc, char** argv) {
   CLI::App* setup = app.add_subcommand(
       "autograde-setup", "(the bundle's setup.sh) record what grading trusts, protect it");
   setup->add_option("--root", autograde_root, "the root folder (/autograder)")->required();
+  int setup_jobs = int(std::max(1u, std::thread::hardware_concurrency()));
+  setup->add_option("--jobs", setup_jobs, "build jobs for the grading programs")
+      ->check(CLI::Range(1, 256));
   CLI::App* autograde_cmd = app.add_subcommand(
       "autograde", "(the bundle's run_autograder) grade ROOT/submission into ROOT/results");
   autograde_cmd->add_option("--root", autograde_root, "the root folder (/autograder)")->required();
@@ -128,7 +132,7 @@ int main(int argc, char** argv) {
   }
   if (*setup) {
     try {
-      autograde_setup(autograde_root, fs::read_symlink("/proc/self/exe").string());
+      autograde_setup(autograde_root, fs::read_symlink("/proc/self/exe").string(), setup_jobs);
       return 0;
     } catch (const std::exception& e) {
       std::cerr << "grader autograde-setup: " << e.what() << "\n";

@@ -14,7 +14,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "framework/process/child_process.h"
+#include "grader/process/child_process.h"
 #include "framework/text/text_file.h"
 #include "grader/scratch_tree.h"
 

@@ -52,6 +52,21 @@ void print_score_table(std::ostream& out, const std::vector<PartResult>& results
       << "\n";
 }
 
+namespace {
+
+// What results.json may carry, whoever wrote it: a submission's code must not be able to carry
+// anything out of the grader in its messages (docs/grading.md, "What reaches the student").
+constexpr size_t kStepOutputChars = 2000;
+constexpr size_t kCheckOutputChars = 1200;
+constexpr size_t kRunOutputChars = 6000;
+
+std::string capped(const std::string& text, size_t limit) {
+  if (text.size() <= limit) return text;
+  return text.substr(0, limit) + " [... " + std::to_string(text.size() - limit) + " more characters not shown]";
+}
+
+}  // namespace
+
 nlohmann::json gradescope_results(const std::vector<PartResult>& results, const RunInfo& info) {
   nlohmann::json j;
   double total = 0.0;
@@ -71,7 +86,7 @@ nlohmann::json gradescope_results(const std::vector<PartResult>& results, const 
       t["score"] = s.score;
       t["max_score"] = s.max_score;
       t["status"] = s.passed() ? "passed" : "failed";
-      t["output"] = s.message;
+      t["output"] = capped(s.message, kStepOutputChars);
       t["visibility"] = "visible";
       nlohmann::json checks = nlohmann::json::array();
       for (const CheckResult& c : s.checks) {
@@ -79,7 +94,7 @@ nlohmann::json gradescope_results(const std::vector<PartResult>& results, const 
                              {"kind", c.kind},
                              {"status", c.skipped ? "skipped" : c.pass ? "passed" : "failed"},
                              {"seconds", c.seconds},
-                             {"output", c.output}};
+                             {"output", capped(c.output, kCheckOutputChars)}};
         if (c.kind == "render") cj["seed"] = c.seed;
         checks.push_back(cj);
       }
@@ -94,7 +109,7 @@ nlohmann::json gradescope_results(const std::vector<PartResult>& results, const 
   }
   j["score"] = total;
   j["execution_time"] = info.seconds;
-  j["output"] = output;
+  j["output"] = capped(output, kRunOutputChars);
   j["extra_data"] = {{"isolated", info.isolated},
                      {"seed_offset", info.seed_offset},
                      {"parts", parts},

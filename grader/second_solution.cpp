@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "framework/process/child_process.h"
+#include "grader/process/child_process.h"
 #include "grader/scratch_tree.h"
 
 namespace fs = std::filesystem;

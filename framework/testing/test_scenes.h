@@ -14,6 +14,7 @@
 #include "framework/render/pixel_stats.h"
 #include "framework/scene/light.h"
 #include "framework/scene/scene.h"
+#include "framework/testing/observed_counters.h"
 
 namespace pt::test {
 
@@ -29,7 +30,16 @@ namespace pt::test {
 /// file that compiles CGAL.
 class DoubleQuery final : public RayQuery {
  public:
-  explicit DoubleQuery(const Scene& scene) : s_(scene) {}
+  explicit DoubleQuery(const Scene& scene) : s_(scene) {
+    observe_counter(&intersect_calls);
+    observe_counter(&occluded_calls);
+  }
+  ~DoubleQuery() override {
+    forget_counter(&intersect_calls);
+    forget_counter(&occluded_calls);
+  }
+  DoubleQuery(const DoubleQuery&) = delete;
+  DoubleQuery& operator=(const DoubleQuery&) = delete;
   mutable long intersect_calls = 0, occluded_calls = 0;
 
   bool intersect(const Ray& ray, SurfaceHit* hit) const override {

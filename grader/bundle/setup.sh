@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # The autograder's setup: Gradescope runs it once, as root, when it builds the image, with this
 # bundle unpacked in $ROOT/source. It installs what grading needs, builds the instructor's tree
-# (the complete solution) once, then `grader autograde-setup` records what grading trusts (the
-# student files, their stubs, the test list of the complete solution, a copy of the grader and of
-# the solution) where the student's code cannot read it, and takes the solution out of the tree.
+# tree's grader once, then `grader autograde-setup` records what grading trusts (the student
+# files, their stubs, a copy of the grader and of the solution) where the student's code cannot
+# read it, takes the solution out of the tree and builds what grading runs.
 #
 # Target: Ubuntu 22.04 "jammy", Gradescope's default base image; it also runs on Debian 12
 # "bookworm", the project's own machines, where CI runs it. The packages are the grading subset of
@@ -56,21 +56,15 @@ if [ "${PT_CCACHE:-0}" = 1 ] && command -v ccache >/dev/null 2>&1; then
   # Paths relative to the project in the cache's keys, so another root folder hits the cache.
   export CCACHE_BASEDIR="$SRC/project" CCACHE_NOHASHDIR=1
 fi
-say "configuring and building the instructor's tree with $JOBS jobs"
+say "configuring the instructor's tree, building the grader with $JOBS jobs"
 # The build sits where a developer's does (project/build), so a compiler cache keyed on paths
 # relative to the project serves it.
 BUILD="$SRC/project/build"
-# The tests are listed when ctest runs (once, here, on the complete solution: the trusted list),
-# never at their link: a student's build then runs none of the student's code.
 cmake -S "$SRC/project" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DPT_SOLUTION_DIR="$PT/private/solution" -DPT_TEST_DISCOVERY=PRE_TEST "${launcher[@]}" >/dev/null
-targets=(grader)
-for n in 1 2 3 4 5; do
-  if grep -q "grade_part${n}_isolated" "$BUILD/build.ninja"; then
-    targets+=("grade_part${n}_isolated")
-  fi
-  targets+=("grade_part${n}")
-done
-cmake --build "$BUILD" -j "$JOBS" --target "${targets[@]}"
-"$BUILD/grader/grader" autograde-setup --root "$ROOT"
+cmake --build "$BUILD" -j "$JOBS" --target grader
+# The grader puts the stubs in the part folders, then builds what grading runs (the judges, the
+# complete solution's renderer from the private copy, every object the probes link) into the
+# build's secret folder, and locks it and the rest away from the student's user.
+"$BUILD/grader/grader" autograde-setup --root "$ROOT" --jobs "$JOBS"
 say "done"

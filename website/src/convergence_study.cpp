@@ -5,7 +5,7 @@
 #include <chrono>
 #include <fstream>
 
-#include "framework/process/child_process.h"
+#include "grader/process/child_process.h"
 #include "website/src/directive.h"
 
 namespace fs = std::filesystem;

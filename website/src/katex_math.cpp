@@ -8,7 +8,7 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "framework/process/child_process.h"
+#include "grader/process/child_process.h"
 
 namespace fs = std::filesystem;
 

@@ -13,7 +13,7 @@
 #include <limits>
 
 #include "framework/image/image.h"
-#include "framework/process/child_process.h"
+#include "grader/process/child_process.h"
 #include "framework/text/text_file.h"
 #include "website/src/directive.h"
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "framework/process/child_process.h"
+#include "grader/process/child_process.h"
 
 namespace pt::web {
 

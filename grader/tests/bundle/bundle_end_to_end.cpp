@@ -14,13 +14,14 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <regex>
 #include <set>
 #include <sstream>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "framework/process/child_process.h"
+#include "grader/process/child_process.h"
 #include "framework/testing/temp_folder.h"
 #include "framework/testing/test_paths.h"
 #include "framework/text/text_file.h"
@@ -363,6 +364,231 @@ TEST_F(GraderBundle, CheatersGetNothingForWhatTheyAttack) {
         EXPECT_NE(all.find(std::string("CHEAT read ") + what), std::string::npos) << what << "\n" << outputs(r);
       }
     }
+  }
+}
+
+/// Every file under `dir` as the grader sees it (the test runs as root): the targets an attacker
+/// who read the bundle's scripts would aim at.
+std::vector<fs::path> files_under(const fs::path& dir) {
+  std::vector<fs::path> all;
+  std::error_code ec;
+  for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+    if (it->is_regular_file(ec)) all.push_back(it->path());
+  std::sort(all.begin(), all.end());
+  return all;
+}
+
+std::string c_string(const std::string& s) {
+  std::string r = "\"";
+  for (char ch : s) {
+    if (ch == '\n') r += "\\n";
+    else if (ch == '"' || ch == '\\') r += std::string("\\") + ch;
+    else r += ch;
+  }
+  return r + "\"";
+}
+
+/// A static constructor that, before the test's or the renderer's main, tries every way a
+/// student's code could take a grade or the solution: run another program of the tree in its
+/// place (the complete solution's renderer, a judge, another part's probe or isolated renderer,
+/// the ordinary test programs) with its own arguments and descriptors; read the solution, the
+/// references, the judges' records; .incbin any of them (each guarded by __has_include, so the
+/// file compiles where the file cannot be read); write a forged record to the probe's descriptor.
+/// Whatever it got it prints on a "not implemented" line (the one kind of line the grader quotes).
+std::string attack_prelude(const fs::path& root) {
+  const fs::path project = root / "source" / "project";
+  std::vector<fs::path> programs, secrets;
+  for (const fs::path& f : files_under(project / "build" / "secret")) {
+    std::string n = f.filename().string();
+    if (n.rfind("judge_part", 0) == 0 || n.rfind("probe_part", 0) == 0 ||
+        n.rfind("pathtracer_", 0) == 0)
+      programs.push_back(f);
+    if (f.extension() == ".o" || f.extension() == ".a" || n.rfind("judge_part", 0) == 0 ||
+        n == "pathtracer_solution")
+      secrets.push_back(f);
+  }
+  for (const char* p : {"build/app/pathtracer", "build/app/bench"}) programs.push_back(project / p);
+  for (const fs::path& f : files_under(project / "build" / "parts"))
+    if (f.filename().string().find("_test") != std::string::npos && (fs::status(f).permissions() & fs::perms::owner_exec) != fs::perms::none)
+      programs.push_back(f);
+  // The private folder but the stubs, which are the handout's and no secret.
+  for (const fs::path& f : files_under(root / "pt" / "private"))
+    if (f.string().find("/private/stubs/") == std::string::npos) secrets.push_back(f);
+  for (const fs::path& f : files_under(project / "reference")) secrets.push_back(f);
+  std::string s = "#include <cerrno>\n#include <cstdio>\n#include <cstdlib>\n#include <cstring>\n"
+                  "#include <fstream>\n#include <iterator>\n#include <string>\n#include <unistd.h>\n"
+                  "#include <vector>\nnamespace {\n";
+  // The .incbin attempts: one blob per file the compiler can open as the student's user.
+  std::string sizes = "long incbin_bytes() { long n = 0;\n";
+  for (size_t i = 0; i < secrets.size(); ++i) {
+    const std::string b = "pt_blob" + std::to_string(i);
+    const std::string assembly = ".pushsection .rodata\n.globl " + b + "_begin\n" + b + "_begin:\n" +
+                                 ".incbin \"" + secrets[i].string() + "\"\n.globl " + b + "_end\n" +
+                                 b + "_end:\n.popsection\n";
+    s += "#if __has_include(" + c_string(secrets[i].string()) + ")\n";
+    s += "extern \"C\" const char " + b + "_begin[], " + b + "_end[];\n";
+    s += "asm(" + c_string(assembly) + ");\n";
+    s += "#define PT_HAVE_" + b + "\n#endif\n";
+    sizes += "#ifdef PT_HAVE_" + b + "\n  n += " + b + "_end - " + b + "_begin;\n#endif\n";
+  }
+  s += sizes + "  return n; }\n";
+  s += "const char* const kPrograms[] = {\n";
+  for (const fs::path& f : programs) s += "  " + c_string(f.string()) + ",\n";
+  s += "  nullptr};\nconst char* const kSecrets[] = {\n";
+  for (const fs::path& f : secrets) s += "  " + c_string(f.string()) + ",\n";
+  s += "  nullptr};\n";
+  s += R"(struct Attack {
+  Attack() {
+    if (std::getenv("PT_CHEAT_DONE")) return;
+    setenv("PT_CHEAT_DONE", "1", 1);
+    long read = 0;
+    for (const char* const* p = kSecrets; *p; ++p) {
+      std::ifstream in(*p, std::ios::binary);
+      read += long(std::string((std::istreambuf_iterator<char>(in)), {}).size());
+    }
+    if (const char* fd = std::getenv("PT_RECORD_FD")) {
+      const char junk[] = "C\x65\x00\x00\x00\x00\x00\x00R\x65\x00\x00\x04\x00\x00\x00\x00\x00\x00\x00";
+      ssize_t w = write(std::atoi(fd), junk, sizeof junk);
+      (void)w;
+    }
+    std::printf("CHEAT read %ld bytes, incbin %ld bytes (not implemented)\n", read, incbin_bytes());
+    std::fflush(stdout);
+    char self[4096] = {0};
+    ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
+    (void)n;
+    std::string cmdline;
+    {
+      std::ifstream in("/proc/self/cmdline", std::ios::binary);
+      cmdline.assign((std::istreambuf_iterator<char>(in)), {});
+    }
+    std::vector<char*> argv;
+    for (size_t at = 0; at < cmdline.size(); at += std::strlen(cmdline.c_str() + at) + 1)
+      argv.push_back(&cmdline[at]);
+    argv.push_back(nullptr);
+    extern char** environ;
+    for (const char* const* p = kPrograms; *p; ++p) {
+      if (std::strcmp(*p, self) == 0) continue;
+      argv[0] = const_cast<char*>(*p);
+      execve(*p, argv.data(), environ);
+      std::printf("CHEAT exec %s: %s (not implemented)\n", *p, std::strerror(errno));
+    }
+    std::fflush(stdout);
+  }
+} attack;
+}  // namespace
+)";
+  return s;
+}
+
+// Every route of the attacks above, from every part's files at once: a submission of the
+// handout's stubs with the attack before one file of each part scores what the stubs score, 0,
+// on every step, and nothing it read or ran shows in the results.
+TEST_F(GraderBundle, AttacksFromEveryPartScoreWhatTheStubsScore) {
+  const fs::path stubs = bundle_->root() / "pt" / "private" / "stubs";
+  Files files;
+  std::set<std::string> attacked_parts;
+  for (const auto& [rel, text] : bundle_->solution()) {
+    std::string part = rel.substr(0, rel.find('/', 6));
+    if (attacked_parts.count(part)) continue;
+    attacked_parts.insert(part);
+    files[rel] = attack_prelude(bundle_->root()) + read_text_file(stubs / rel);
+  }
+  ASSERT_EQ(attacked_parts.size(), 5u);
+  double seconds = 0.0;
+  nlohmann::json r = bundle_->grade(files, "", &seconds, {kCheckCap});
+  EXPECT_EQ(validate_gradescope(r), "");
+  std::printf("attacks in every part's files: %g/%g in %.0f s\n", r.value("score", -1.0),
+              max_score(r), seconds);
+  for (const auto& [step, score] : step_scores(r)) EXPECT_EQ(score, 0.0) << step << "\n" << outputs(r);
+  const std::string all = r.dump();
+  EXPECT_EQ(all.find("did not build"), std::string::npos) << "the attack should compile:\n" << outputs(r);
+  EXPECT_NE(all.find("CHEAT read 0 bytes, incbin 0 bytes"), std::string::npos) << outputs(r);
+  std::regex got("CHEAT read ([0-9]+) bytes, incbin ([0-9]+) bytes");
+  for (std::sregex_iterator it(all.begin(), all.end(), got), end; it != end; ++it)
+    EXPECT_EQ((*it)[0].str(), "CHEAT read 0 bytes, incbin 0 bytes") << outputs(r);
+}
+
+// An image rendered beforehand (here the manifest's own reference, the best one a student could
+// have) written to the render's output before main: the graded render is of a variant drawn for
+// this grading, so it matches nothing, and every render of Part 1 fails as the stubs' do.
+TEST_F(GraderBundle, AnImageRenderedBeforehandPassesNoRender) {
+  const fs::path reference = kSource / "reference";
+  std::string prelude = "#include <cstdio>\n#include <cstring>\n#include <fstream>\n#include <iterator>\n"
+                        "#include <string>\n#include <unistd.h>\n#include <vector>\nnamespace {\n";
+  int k = 0;
+  std::string table = "struct Image { const char* scene; const unsigned char* bytes; unsigned long size; };\n"
+                      "const Image kImages[] = {\n";
+  for (const char* name : {"cornell_smooth", "cornell_spheres"}) {
+    std::string bytes = read_text_file(reference / ("part1.normals." + std::string(name) + ".exr"));
+    prelude += "const unsigned char kImage" + std::to_string(k) + "[] = {";
+    for (unsigned char ch : bytes) prelude += std::to_string(int(ch)) + ",";
+    prelude += "};\n";
+    table += "  {\"" + std::string(name) + "\", kImage" + std::to_string(k) + ", sizeof kImage" +
+             std::to_string(k) + "},\n";
+    ++k;
+  }
+  prelude += table + "};\n";
+  prelude += R"(struct Replay {
+  Replay() {
+    std::ifstream in("/proc/self/cmdline", std::ios::binary);
+    std::string cmd((std::istreambuf_iterator<char>(in)), {});
+    std::vector<std::string> args;
+    for (size_t at = 0; at < cmd.size(); at += std::strlen(cmd.c_str() + at) + 1) args.push_back(cmd.c_str() + at);
+    std::string out, scene;
+    for (size_t i = 0; i + 1 < args.size(); ++i) if (args[i] == "-f") out = args[i + 1];
+    if (!args.empty()) scene = args.back();
+    if (out.empty()) return;
+    for (const Image& im : kImages)
+      if (scene.find(im.scene) != std::string::npos) {
+        std::ofstream(out, std::ios::binary).write(reinterpret_cast<const char*>(im.bytes), long(im.size));
+        _exit(0);
+      }
+  }
+} replay;
+}  // namespace
+)";
+  Files files = bundle_->solution();
+  files.erase(kSphere);
+  files.erase(kTriangle);
+  double seconds = 0.0;
+  nlohmann::json stubs = bundle_->grade(files, "1", &seconds, {kCheckCap});
+  files[kSphere] = prelude + read_text_file(bundle_->root() / "pt" / "private" / "stubs" / kSphere);
+  nlohmann::json r = bundle_->grade(files, "1", &seconds, {kCheckCap});
+  std::printf("an image rendered beforehand: %g/%g (the stubs: %g) in %.0f s\n",
+              r.value("score", -1.0), max_score(r), stubs.value("score", -1.0), seconds);
+  std::map<std::string, double> base = step_scores(stubs);
+  for (const auto& [step, score] : step_scores(r))
+    EXPECT_LE(score, base[step] + 1e-9) << step << "\n" << outputs(r);
+}
+
+// A submission that prints as much as it can, on "not implemented" lines and others, from every
+// probe and render: results.json stays within its small budget, every message within its cap.
+TEST_F(GraderBundle, WhatTheCodePrintsCannotCarryTheSolutionOut) {
+  const std::string flood = R"(#include <cstdio>
+namespace {
+struct Flood {
+  Flood() {
+    for (int line = 0; line < 2000; ++line) {
+      std::printf("not implemented %d: ", line);
+      for (int i = 0; i < 4096; ++i) std::printf("%02x", (line * 31 + i) & 0xff);
+      std::printf("\n");
+    }
+    std::fflush(stdout);
+  }
+} flood;
+}  // namespace
+)";
+  Files files = bundle_->solution();
+  files[kSphere] = flood + read_text_file(bundle_->root() / "pt" / "private" / "stubs" / kSphere);
+  double seconds = 0.0;
+  nlohmann::json r = bundle_->grade(files, "1", &seconds, {kCheckCap});
+  const std::string all = r.dump();
+  std::printf("a submission that floods its output: results.json %zu bytes in %.0f s\n", all.size(), seconds);
+  EXPECT_LT(all.size(), size_t(64) << 10) << "results.json carries " << all.size() << " bytes";
+  for (const nlohmann::json& t : r.value("tests", nlohmann::json::array())) {
+    EXPECT_LE(t.value("output", "").size(), 2100u) << t.value("name", "");
+    for (const nlohmann::json& c : t["extra_data"].value("checks", nlohmann::json::array()))
+      EXPECT_LE(c.value("output", "").size(), 1300u) << c.value("name", "");
   }
 }
 

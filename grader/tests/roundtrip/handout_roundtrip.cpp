@@ -18,7 +18,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "framework/process/child_process.h"
+#include "grader/process/child_process.h"
 #include "framework/testing/test_paths.h"
 #include "framework/text/text_file.h"
 #include "grader/report.h"

@@ -11,6 +11,7 @@
 
 #include "framework/sampling/rng.h"
 #include "framework/scene/scene.h"
+#include "framework/testing/observed_counters.h"
 #include "parts/2-bvh/bvh.h"
 #include "parts/2-bvh/tests/bvh_test_inputs.h"
 
@@ -42,6 +43,7 @@ inline TraversalWork measure_work(const Bvh& tree_in, size_t count = 2000) {
   Bvh& tree = const_cast<Bvh&>(tree_in);
   uint64_t tested = 0;
   tree.count_primitive_tests(&tested);
+  test::observe_counter(&tested);
   Rng rng(72);
   auto point = [&] { return 10.0f * glm::vec3(rng.next_float(), rng.next_float(), rng.next_float()); };
   for (size_t i = 0; i < count; ++i) {
@@ -65,6 +67,7 @@ inline TraversalWork measure_work(const Bvh& tree_in, size_t count = 2000) {
   }
   w.occluded = double(tested) / double(count);
   tree.count_primitive_tests(nullptr);
+  test::forget_counter(&tested);
   return w;
 }
 

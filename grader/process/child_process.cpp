@@ -1,4 +1,4 @@
-#include "framework/process/child_process.h"
+#include "grader/process/child_process.h"
 
 #include <dirent.h>
 #include <fcntl.h>

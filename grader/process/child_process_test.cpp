@@ -1,6 +1,6 @@
 // A child that crashes, hangs or floods its output is reported as such, and the tool that ran it
 // (the grader, the write-up's renders) goes on.
-#include "framework/process/child_process.h"
+#include "grader/process/child_process.h"
 
 #include <signal.h>
 #include <sys/stat.h>

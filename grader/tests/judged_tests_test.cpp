@@ -1,0 +1,119 @@
+// A test's verdict comes from its judge, which holds no student code: Part 1's real probe and
+// judge pass the complete solution's test; a probe that exits 0 without answering, one that prints
+// GoogleTest's pass lines, one that writes a forged or cut-short record, one that crashes after
+// answering, and one that answers one call wrongly all fail, each with a message that says why.
+#include "grader/judged_tests.h"
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "framework/testing/temp_folder.h"
+
+namespace pt::grader {
+namespace {
+
+#ifdef GRADER_SECRET_DIR
+const std::string kSecret = GRADER_SECRET_DIR;
+
+int own_slot() { return 2000 + int(::getpid() % 30000); }
+
+/// The camera test of Part 1, with its real judge and `probe` in its probe's place.
+JudgedTest camera_test(const std::string& probe) {
+  JudgedTest t;
+  t.part = 1;
+  t.step = 1;
+  t.gtest = "camera_ray.corners_match_the_field_of_view";
+  t.name = "part1.step1." + t.gtest;
+  t.probe = probe;
+  t.judge = kSecret + "/judge_part1_step1_camera_ray_test";
+  return t;
+}
+
+JudgedOutcome run(const JudgedTest& t, const test::TempFolder& dir) {
+  Sandbox sandbox = Sandbox::standard((dir.path() / "scratch").string(), own_slot());
+  return run_judged_tests({t}, sandbox, 60.0, (dir.path() / "records").string()).at(0);
+}
+
+/// A probe that is a shell script: what a student's code could make the probe do instead.
+std::string script(const test::TempFolder& dir, const std::string& name, const std::string& body) {
+  std::filesystem::path p = dir.path() / name;
+  std::ofstream(p) << "#!/bin/sh\n" << body << "\n";
+  std::filesystem::permissions(p, std::filesystem::perms(0755));
+  return p.string();
+}
+
+TEST(GraderJudgedTests, TheJudgesListTheirTests) {
+  std::vector<JudgedTest> tests = list_judged_tests(1, std::filesystem::path(kSecret).parent_path().string(),
+                                                    std::filesystem::path(kSecret).parent_path().string());
+  ASSERT_FALSE(tests.empty());
+  bool found = false;
+  for (const JudgedTest& t : tests) {
+    EXPECT_EQ(t.part, 1);
+    EXPECT_GE(t.step, 1);
+    found = found || t.gtest == camera_test("").gtest;
+  }
+  EXPECT_TRUE(found) << "the camera test is not among Part 1's judged tests";
+}
+
+TEST(GraderJudgedTests, TheSolutionsProbePassesItsJudge) {
+  test::TempFolder dir("pt-judged");
+  JudgedOutcome o = run(camera_test(kSecret + "/probe_part1_step1_camera_ray_test"), dir);
+  EXPECT_TRUE(o.pass) << o.message << "\n" << o.student_output;
+}
+
+TEST(GraderJudgedTests, AProbeThatAnswersNothingFails) {
+  test::TempFolder dir("pt-judged");
+  JudgedOutcome o = run(camera_test(script(dir, "silent", "exit 0")), dir);
+  EXPECT_FALSE(o.pass);
+  EXPECT_NE(o.message.find("stopped before it returned"), std::string::npos) << o.message;
+}
+
+TEST(GraderJudgedTests, PrintedPassLinesCountForNothing) {
+  test::TempFolder dir("pt-judged");
+  JudgedOutcome o = run(camera_test(script(dir, "printer",
+      "echo '[       OK ] camera_ray.corners_match_the_field_of_view (0 ms)'\n"
+      "echo '[  PASSED  ] 1 test.'\nexit 0")), dir);
+  EXPECT_FALSE(o.pass) << o.message;
+}
+
+TEST(GraderJudgedTests, AForgedRecordFails) {
+  test::TempFolder dir("pt-judged");
+  // A call event of another function, then bytes that are no event.
+  JudgedOutcome o = run(camera_test(script(dir, "forger",
+      "printf 'C\\146\\000\\000\\000\\000\\000\\000garbage' >&$PT_RECORD_FD\nexit 0")), dir);
+  EXPECT_FALSE(o.pass);
+  EXPECT_NE(o.message.find("record"), std::string::npos) << o.message;
+}
+
+TEST(GraderJudgedTests, AnswersBeforeACrashDoNotCount) {
+  test::TempFolder dir("pt-judged");
+  std::string real = kSecret + "/probe_part1_step1_camera_ray_test";
+  JudgedOutcome o = run(camera_test(script(dir, "crasher",
+      "\"" + real + "\" \"$@\" >/dev/null\nkill -SEGV $$")), dir);
+  EXPECT_FALSE(o.pass);
+  EXPECT_NE(o.message.find("your code"), std::string::npos) << o.message;
+}
+
+TEST(GraderJudgedTests, OneWrongAnswerFailsTheTest) {
+  test::TempFolder dir("pt-judged");
+  // The real probe's record with one byte of its last answer changed on the way to the grader.
+  std::string real = kSecret + "/probe_part1_step1_camera_ray_test";
+  std::string body =
+      "tmp=$(mktemp)\n"
+      "PT_RECORD_FD=9 \"" + real + "\" \"$@\" 9>\"$tmp\" >/dev/null\n"
+      "size=$(stat -c %s \"$tmp\")\n"
+      "printf '\\177' | dd of=\"$tmp\" bs=1 seek=$((size - 2)) conv=notrunc 2>/dev/null\n"
+      "cat \"$tmp\" >&$PT_RECORD_FD\nrm -f \"$tmp\"\nexit 0";
+  JudgedOutcome o = run(camera_test(script(dir, "changer", body)), dir);
+  EXPECT_FALSE(o.pass) << "a record with a changed answer passed";
+  EXPECT_NE(o.message.find("camera_ray_test.cpp"), std::string::npos)
+      << "the judge's own failure, with its file and line, is the message: " << o.message;
+}
+#endif
+
+}  // namespace
+}  // namespace pt::grader
