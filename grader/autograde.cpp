@@ -398,7 +398,7 @@ int autograde(const std::string& root, const std::vector<int>& parts,
   }
   try {
     fs::create_directories(L.results.parent_path());
-    write_file(L.results, results.dump(2) + "\n", fs::perms(0600));
+    write_file(L.results, results.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n", fs::perms(0600));
   } catch (const std::exception& e) {
     std::cerr << "autograde: " << e.what() << "\n";
     return 2;

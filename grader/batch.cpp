@@ -169,13 +169,13 @@ int grade_batch(const BatchOptions& options) {
         r = nlohmann::json::parse(read_text_file(file));
       } catch (const std::exception&) {
         r = not_graded("the grader " + c.describe() + ": " + tail_lines(c.output, 3));
-        std::ofstream(file) << r.dump(2) << "\n";
+        std::ofstream(file) << r.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
       }
     } catch (const std::exception& e) {
       r = not_graded(e.what());
       std::error_code ec;
       fs::create_directories(out / name, ec);
-      std::ofstream(out / name / "results.json") << r.dump(2) << "\n";
+      std::ofstream(out / name / "results.json") << r.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
     }
     double max = 0.0;
     for (const nlohmann::json& t : r.value("tests", nlohmann::json::array())) max += t.value("max_score", 0.0);
@@ -199,7 +199,7 @@ int grade_batch(const BatchOptions& options) {
   // grade counts.
   if (jobs > 1) {
     for (size_t i = 0; i < names.size(); ++i)
-      if (results[i].dump().find("wrote more to disk than it is allowed") != std::string::npos)
+      if (results[i].dump(-1, ' ', false, nlohmann::json::error_handler_t::replace).find("wrote more to disk than it is allowed") != std::string::npos)
         grade_one(i, 0, true);
   }
 

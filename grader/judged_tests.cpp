@@ -29,6 +29,25 @@ constexpr size_t kMaxRecordBytes = size_t(512) << 20;
 // The probes and judges are built in the tree's folder for what holds the solution or judges.
 std::string judge_dir(const std::string& build) { return (fs::path(build) / "secret").string(); }
 
+/// GoogleTest's JSON writes each byte of a message as a character of its own (\u00c2\u00b1 for
+/// the two bytes of ±): when every character of `text` is below 256, its bytes are those.
+std::string bytes_of(const std::string& text) {
+  std::string out;
+  for (size_t i = 0; i < text.size();) {
+    unsigned char c = static_cast<unsigned char>(text[i]);
+    if (c < 0x80) {
+      out += char(c);
+      ++i;
+    } else if ((c & 0xe0) == 0xc0 && i + 1 < text.size() && c <= 0xc3) {
+      out += char(((c & 0x1f) << 6) | (static_cast<unsigned char>(text[i + 1]) & 0x3f));
+      i += 2;
+    } else {
+      return text;  // a character past 255: the text is UTF-8 already
+    }
+  }
+  return out;
+}
+
 /// The first failure GoogleTest's JSON report of the judge holds, or "".
 std::string judge_failure(const std::string& json_text) {
   try {
@@ -36,7 +55,7 @@ std::string judge_failure(const std::string& json_text) {
     for (const auto& suite : j.value("testsuites", nlohmann::json::array()))
       for (const auto& test : suite.value("testsuite", nlohmann::json::array()))
         for (const auto& f : test.value("failures", nlohmann::json::array()))
-          return f.value("failure", "");
+          return bytes_of(f.value("failure", ""));
   } catch (const std::exception&) {
   }
   return "";

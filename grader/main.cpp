@@ -241,7 +241,7 @@ int main(int argc, char** argv) {
     info.isolated = options.isolated;
     info.seed_offset = options.seed_offset;
     info.seconds = seconds;
-    out << gradescope_results(results, info).dump(2) << "\n";
+    out << gradescope_results(results, info).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
     if (!out) {
       std::cerr << "grader: cannot write " << json_path << "\n";
       return 2;

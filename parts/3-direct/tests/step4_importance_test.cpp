@@ -58,6 +58,44 @@ TEST(importance, point_light_over_plane_is_exact) {
       << "(one shadow ray) whatever -l says (here 16)";
 }
 
+// Every light adds its own light: three point lights of different colours and powers over a
+// plane, each estimated exactly, sum to Σ ρ/π · I cosθ / d² per channel. An estimate that
+// averages over the lights (a third of this) or takes only one of them fails by a factor no
+// rounding explains; a scene with one light cannot tell those apart from the sum.
+TEST(importance, several_lights_add_their_light) {
+  Scene s;
+  uint32_t m = test::add_material(s, glm::vec3(0.5f));
+  test::add_quad(s, {-5, -5, 0}, {5, -5, 0}, {5, 5, 0}, {-5, 5, 0}, m);
+  struct Point {
+    glm::vec3 at, intensity;
+  };
+  const Point points[] = {{{1.0f, 0.0f, 2.0f}, {10.0f, 2.0f, 0.5f}},
+                          {{-1.5f, 0.5f, 1.0f}, {1.0f, 6.0f, 1.0f}},
+                          {{0.0f, -2.0f, 3.0f}, {3.0f, 3.0f, 20.0f}}};
+  glm::dvec3 expected(0.0);
+  for (const Point& p : points) {
+    Light l;
+    l.kind = LightKind::point;
+    l.position = p.at;
+    l.radiance = p.intensity;
+    s.lights.push_back(l);
+    const double d2 = double(glm::dot(p.at, p.at)), cos_theta = p.at.z / std::sqrt(d2);
+    expected += glm::dvec3(p.intensity) * (0.5 / M_PI * cos_theta / d2);
+  }
+  test::Rig rig(s);
+  rig.ctx.light_samples = 4;
+  Ray r;
+  r.o = glm::vec3(0.0f, 0.0f, 3.0f);
+  Rng rng(11);
+  const glm::vec3 L = test::reflected_at_hit(rig, false, r, rng);
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(L[c], expected[c], 1e-5 * expected[c])
+        << "channel " << c << " under three point lights"
+        << test::ratio_hint(L[c], expected[c],
+                            {{1.0 / 3.0, "the lights averaged, not summed (each light adds its own light)?"}});
+  EXPECT_EQ(rig.query.occluded_calls, 3) << "one shadow ray per point light (a delta light takes one sample)";
+}
+
 // A shadow ray runs from the point (started by spawn_shadow_ray, which offsets it by the hit's
 // error bound only) to just short of the light: an occluder 1.5 cm above the floor shadows it
 // completely, and a ceiling 1 cm above a point light does not. A fixed epsilon of 0.05 starts

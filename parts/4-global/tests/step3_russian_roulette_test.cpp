@@ -33,13 +33,22 @@ void expect_roulette_keeps_the_mean(const Scene& scene, bool hemisphere, uint64_
   EXPECT_TRUE(c.pass) << what << ", with roulette against without: " << c.text
                       << (c.x < c.y ? ": darker with roulette: a path that goes on with "
                                       "probability q must have what it brings back divided by q?"
-                                    : ": brighter with roulette: divided by q more than once, or "
-                                      "where the path ended?");
+                                    : ": brighter with roulette: divided by the chance to stop "
+                                      "(1 - q) instead of the chance to go on (q), by q more than "
+                                      "once, or where the path ended?");
 }
 
 TEST(russian_roulette, keeps_the_mean_in_a_glowing_enclosure) {
   expect_roulette_keeps_the_mean(test::enclosure(0.5f, 1.0f), false, 3, "enclosure, light sampling");
   expect_roulette_keeps_the_mean(test::enclosure(0.5f, 1.0f), true, 5, "enclosure, hemisphere sampling");
+}
+
+// Where going on and stopping are not equally likely: with albedo 0.5 the probability q of going
+// on equals 1 - q, so dividing by the wrong one passes; at 0.8 and 0.3 it is off by a factor of
+// 4 or more.
+TEST(russian_roulette, keeps_the_mean_where_going_on_and_stopping_differ) {
+  expect_roulette_keeps_the_mean(test::enclosure(0.8f, 1.0f), false, 21, "enclosure of albedo 0.8");
+  expect_roulette_keeps_the_mean(test::enclosure(0.3f, 1.0f), true, 23, "enclosure of albedo 0.3");
 }
 
 // A point light of intensity π at the centre of a unit sphere of albedo 0.5, seen from inside.
