@@ -440,10 +440,10 @@ CheckResult grade_render(const Manifest& manifest, const RenderCheck& check,
                (todo.empty() ? output_excerpt(c.output, 8) : todo);
     return r;
   }
-  // A stub of this part that ran is not the student's answer, however right its image: Part 2's
-  // stubs walk every leaf, so with the solution's Part 1 linked (--isolated) a render through
-  // them matches the reference. The stub says so itself (PT_STUDENT_TODO), once per process.
-  if (todo.find("part " + std::to_string(check.part) + " not implemented") != std::string::npos) {
+  // A stub of this part that ran is not the student's answer. No stub gives a right image (that
+  // is the guard a submission cannot silence); the stub also says so itself (PT_STUDENT_TODO),
+  // once per process, and a render that says so fails at once.
+  if (c.output.find("part " + std::to_string(check.part) + " not implemented") != std::string::npos) {
     r.output = "the render ran this part's unwritten stubs, so it shows no code of yours:\n" + todo;
     return r;
   }

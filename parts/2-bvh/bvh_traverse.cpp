@@ -55,8 +55,7 @@ void Bvh::traverse_nearest(NearestState* state) const {
   // index + 1, the second node.offset) and go into the nearer one, pushing the other.
   // intersect() turns the best hit intersect_leaf kept into a SurfaceHit afterwards.
   PT_STUDENT_TODO("part 2", "Bvh::traverse_nearest");
-  for (const BvhNode& node : nodes_)
-    if (node.is_leaf()) intersect_leaf(node, &st);
+  (void)st;  // no hit: the tree finds nothing until you write its walk
 }
 
 bool Bvh::occluded(const Ray& ray) const {
@@ -83,8 +82,7 @@ bool Bvh::occluded(const Ray& ray) const {
   // STUDENT: the same walk as intersect, but return true at the first leaf where
   // leaf_occludes(node, ray) says so; no nearest-first order or distances are needed.
   PT_STUDENT_TODO("part 2", "Bvh::occluded");
-  for (const BvhNode& node : nodes_)
-    if (node.is_leaf() && leaf_occludes(node, ray)) return true;
+  (void)box;
   return false;
 }
 

@@ -29,6 +29,7 @@
 #include "grader/bundle.h"
 #include "grader/handout.h"
 #include "grader/report.h"
+#include "grader/sandbox.h"
 
 namespace fs = std::filesystem;
 
@@ -388,14 +389,14 @@ std::string c_string(const std::string& s) {
   return r + "\"";
 }
 
-/// A static constructor that, before the test's or the renderer's main, tries every way a
-/// student's code could take a grade or the solution: run another program of the tree in its
-/// place (the complete solution's renderer, a judge, another part's probe or isolated renderer,
-/// the ordinary test programs) with its own arguments and descriptors; read the solution, the
-/// references, the judges' records; .incbin any of them (each guarded by __has_include, so the
-/// file compiles where the file cannot be read); write a forged record to the probe's descriptor.
-/// Whatever it got it prints on a "not implemented" line (the one kind of line the grader quotes).
-std::string attack_prelude(const fs::path& root) {
+/// What an attacker who read the bundle's scripts would aim at in the set-up tree: the programs
+/// (the complete solution's renderer, the judges, any probe or isolated renderer, the ordinary
+/// test programs) and the files that hold the solution or the verdicts.
+struct Targets {
+  std::vector<fs::path> programs, secrets;
+};
+
+Targets targets_of(const fs::path& root) {
   const fs::path project = root / "source" / "project";
   std::vector<fs::path> programs, secrets;
   for (const fs::path& f : files_under(project / "build" / "secret")) {
@@ -415,23 +416,22 @@ std::string attack_prelude(const fs::path& root) {
   for (const fs::path& f : files_under(root / "pt" / "private"))
     if (f.string().find("/private/stubs/") == std::string::npos) secrets.push_back(f);
   for (const fs::path& f : files_under(project / "reference")) secrets.push_back(f);
+  return {programs, secrets};
+}
+
+/// A static constructor that, before the test's or the renderer's main, tries every way a
+/// student's code could take a grade or the solution at run time: run another program of the
+/// tree in its place with its own arguments and descriptors; read the solution, the references,
+/// the judges; write a forged record to the probe's descriptor. Whatever it got it prints on a
+/// "not implemented" line (the one kind of line the grader quotes). (At compile time the same
+/// files are out of the compiler's reach: the test checks that the student's user can open none.)
+std::string attack_prelude(const fs::path& root) {
+  const Targets t = targets_of(root);
+  const std::vector<fs::path>& programs = t.programs;
+  const std::vector<fs::path>& secrets = t.secrets;
   std::string s = "#include <cerrno>\n#include <cstdio>\n#include <cstdlib>\n#include <cstring>\n"
                   "#include <fstream>\n#include <iterator>\n#include <string>\n#include <unistd.h>\n"
                   "#include <vector>\nnamespace {\n";
-  // The .incbin attempts: one blob per file the compiler can open as the student's user.
-  std::string sizes = "long incbin_bytes() { long n = 0;\n";
-  for (size_t i = 0; i < secrets.size(); ++i) {
-    const std::string b = "pt_blob" + std::to_string(i);
-    const std::string assembly = ".pushsection .rodata\n.globl " + b + "_begin\n" + b + "_begin:\n" +
-                                 ".incbin \"" + secrets[i].string() + "\"\n.globl " + b + "_end\n" +
-                                 b + "_end:\n.popsection\n";
-    s += "#if __has_include(" + c_string(secrets[i].string()) + ")\n";
-    s += "extern \"C\" const char " + b + "_begin[], " + b + "_end[];\n";
-    s += "asm(" + c_string(assembly) + ");\n";
-    s += "#define PT_HAVE_" + b + "\n#endif\n";
-    sizes += "#ifdef PT_HAVE_" + b + "\n  n += " + b + "_end - " + b + "_begin;\n#endif\n";
-  }
-  s += sizes + "  return n; }\n";
   s += "const char* const kPrograms[] = {\n";
   for (const fs::path& f : programs) s += "  " + c_string(f.string()) + ",\n";
   s += "  nullptr};\nconst char* const kSecrets[] = {\n";
@@ -451,7 +451,7 @@ std::string attack_prelude(const fs::path& root) {
       ssize_t w = write(std::atoi(fd), junk, sizeof junk);
       (void)w;
     }
-    std::printf("CHEAT read %ld bytes, incbin %ld bytes (not implemented)\n", read, incbin_bytes());
+    std::printf("CHEAT read %ld bytes (not implemented)\n", read);
     std::fflush(stdout);
     char self[4096] = {0};
     ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
@@ -465,11 +465,10 @@ std::string attack_prelude(const fs::path& root) {
     for (size_t at = 0; at < cmdline.size(); at += std::strlen(cmdline.c_str() + at) + 1)
       argv.push_back(&cmdline[at]);
     argv.push_back(nullptr);
-    extern char** environ;
     for (const char* const* p = kPrograms; *p; ++p) {
       if (std::strcmp(*p, self) == 0) continue;
       argv[0] = const_cast<char*>(*p);
-      execve(*p, argv.data(), environ);
+      execve(*p, argv.data(), ::environ);
       std::printf("CHEAT exec %s: %s (not implemented)\n", *p, std::strerror(errno));
     }
     std::fflush(stdout);
@@ -494,6 +493,23 @@ TEST_F(GraderBundle, AttacksFromEveryPartScoreWhatTheStubsScore) {
     files[rel] = attack_prelude(bundle_->root()) + read_text_file(stubs / rel);
   }
   ASSERT_EQ(attacked_parts.size(), 5u);
+  // Compile time: the compiler runs as the student's user, so an #include, __has_include or
+  // .incbin of a file reaches it only if that user can open it. None of the targets opens.
+  const Targets targets = targets_of(bundle_->root());
+  ASSERT_GT(targets.secrets.size(), 20u) << "the set-up tree has no solution objects or judges to aim at";
+  Sandbox student = Sandbox::standard((bundle_->scratch() / "probe-scratch").string(), 900);
+  ASSERT_TRUE(student.protects());
+  const std::string scratch = student.make_scratch("open");
+  int opened = 0;
+  for (const fs::path& f : targets.secrets) {
+    ChildResult open = run_child({"head", "-c", "1", f.string()}, student.options(scratch, 10.0));
+    if (open.ok()) {
+      ++opened;
+      ADD_FAILURE() << "the student's user can read " << f;
+    }
+  }
+  student.finish(scratch);
+  std::printf("the student's user opens %d of %zu protected files\n", opened, targets.secrets.size());
   double seconds = 0.0;
   nlohmann::json r = bundle_->grade(files, "", &seconds, {kCheckCap});
   EXPECT_EQ(validate_gradescope(r), "");
@@ -502,10 +518,11 @@ TEST_F(GraderBundle, AttacksFromEveryPartScoreWhatTheStubsScore) {
   for (const auto& [step, score] : step_scores(r)) EXPECT_EQ(score, 0.0) << step << "\n" << outputs(r);
   const std::string all = r.dump();
   EXPECT_EQ(all.find("did not build"), std::string::npos) << "the attack should compile:\n" << outputs(r);
-  EXPECT_NE(all.find("CHEAT read 0 bytes, incbin 0 bytes"), std::string::npos) << outputs(r);
-  std::regex got("CHEAT read ([0-9]+) bytes, incbin ([0-9]+) bytes");
+  EXPECT_EQ(all.find("did not link"), std::string::npos) << "the attack should link:\n" << outputs(r);
+  EXPECT_NE(all.find("CHEAT read 0 bytes"), std::string::npos) << outputs(r);
+  std::regex got("CHEAT read ([0-9]+) bytes");
   for (std::sregex_iterator it(all.begin(), all.end(), got), end; it != end; ++it)
-    EXPECT_EQ((*it)[0].str(), "CHEAT read 0 bytes, incbin 0 bytes") << outputs(r);
+    EXPECT_EQ((*it)[0].str(), "CHEAT read 0 bytes") << outputs(r);
 }
 
 // An image rendered beforehand (here the manifest's own reference, the best one a student could
