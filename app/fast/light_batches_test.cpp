@@ -1,9 +1,9 @@
 // LightBatches, installed as the thread's FasterLightSampling: whatever an estimate draws, every
 // sample LightSet::sample gives it is make_sample's for the light, point and numbers it passed,
-// and spawn_shadow_ray gives make_shadow_ray's ray for it, to the bit; it foresees the numbers of
-// an estimate that draws them one sample after another, and stops foreseeing for one that draws
-// otherwise.
+// and spawn_shadow_ray gives make_shadow_ray's ray for it, to the bit.
 // SOLUTION-ONLY FILE: not in the student handout, since it tests the instructor's build's speed.
+// It foresees the numbers of an estimate that draws them one sample after another, and stops
+// foreseeing for one that draws otherwise.
 #include "app/fast/light_batches.h"
 
 #include <gtest/gtest.h>
