@@ -68,7 +68,9 @@ class LightBatches final : public FasterLightSampling {
   /// `ls`, copied as the batch writes a sample (light_batches.cpp says why).
   static LightSample copy_of(const LightSample& ls);
   /// A call the batch does not answer: a new batch when foreseeing is on and pays, else one sample.
-  LightSample sample_anew(const LightSet& set, int index, const SurfaceHit& hit, glm::vec2 u);
+  /// Never inlined into sample(): its frame (eight-lane locals, saved registers) would be paid by
+  /// every call the batch answers.
+  [[gnu::noinline]] LightSample sample_anew(const LightSet& set, int index, const SurfaceHit& hit, glm::vec2 u);
 
   const Rng* rng_;
   int light_samples_;
