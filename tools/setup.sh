@@ -20,6 +20,11 @@ packages=(
   libembree-dev         # optional: bench --embree comparison only
   clang libclang-rt-dev llvm  # optional: tools/fuzz (libFuzzer, its sanitizers, llvm-cov)
   chromium              # headless browser test of the write-up
+  # The other machines CI builds for (tools/ports/): Clang with libc++ (macOS's standard library)
+  # and GoogleTest's sources to build with it; the arm64 cross compiler and qemu-user to run its
+  # programs (the arm64 libraries are unpacked into the build tree, not installed).
+  libc++-dev libc++abi-dev googletest
+  g++-aarch64-linux-gnu qemu-user-static
 )
 
 SUDO=""
