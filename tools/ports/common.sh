@@ -2,7 +2,7 @@
 # step tests (not their long stress checks, not the apps) in a tree of its own, run them, and
 # say how long each stage took.
 #   ports_build DIR [cmake -D options ...]   configure DIR and build the parts' tests there
-#   ports_test DIR                           run the parts' tests (labels part1 .. part5)
+#   ports_test DIR [ctest options ...]       run the parts' tests (labels part1 .. part5)
 #   ports_stage NAME                         start timing a stage; ports_done prints them all
 
 ports_started=$(date +%s)
@@ -51,7 +51,9 @@ ports_build() {
   cmake --build "$dir" -j "${JOBS:-$(getconf _NPROCESSORS_ONLN)}" --target $targets
 }
 
-ports_test() {
-  ctest --test-dir "$1" -L '^part[1-5]$' --output-on-failure -j "${JOBS:-$(getconf _NPROCESSORS_ONLN)}" \
-    --no-tests=error
+ports_test() {  # ports_test DIR [ctest options ...]
+  local dir="$1"
+  shift
+  ctest --test-dir "$dir" -L '^part[1-5]$' --output-on-failure -j "${JOBS:-$(getconf _NPROCESSORS_ONLN)}" \
+    --no-tests=error "$@"
 }
