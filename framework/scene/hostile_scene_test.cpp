@@ -221,7 +221,7 @@ TEST(FrameworkHostileScene, InstancingPastTheLimitFailsAtOnceNamingTheNodeChain)
 }
 
 // (e) Many one-triangle instances: the triangle array was reserved one instance larger each
-// time, copying it whole per instance (262,000 instances took over a minute).
+// time, copying it whole per instance, so the load took time quadratic in the instances.
 TEST(FrameworkHostileScene, ManySmallInstancesLoadInLinearTime) {
   constexpr int kInstances = 262000;
   std::string nodes;
@@ -241,8 +241,8 @@ TEST(FrameworkHostileScene, ManySmallInstancesLoadInLinearTime) {
   }
 }
 
-// (f) Each warning counted the file's lines from its start: 20,000 warnings took 6 s, 60,000
-// about 8 s here, 150,000 most of a minute.
+// (f) Each warning counted the file's lines from its start, so the time grew with the warnings
+// times the file's length.
 TEST(FrameworkHostileScene, ManyWarningsFindTheirLineNumbersQuickly) {
   constexpr int kWarnings = 150000;
   std::string nodes = "<node id=\"N\"><instance_geometry url=\"#g\"/>\n";
