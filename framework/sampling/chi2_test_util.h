@@ -3,7 +3,6 @@
 // The method of Nori, pbrt and Mitsuba: bin many sampled directions on a grid over the sphere,
 // integrate the claimed density over each cell numerically, pool cells whose expected count is
 // small, and ask Pearson's statistic how likely the observed histogram is under that density.
-// Only tests include this header (it pulls in Boost.Math for the chi-square distribution).
 #pragma once
 
 #include <algorithm>
@@ -13,13 +12,13 @@
 #include <string>
 #include <vector>
 
-#include <boost/math/distributions/chi_squared.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "framework/math/frame.h"
 #include "framework/sampling/rng.h"
+#include "framework/stats/distributions.h"
 
 namespace pt {
 
@@ -127,8 +126,7 @@ inline Chi2Result chi2_direction_test(const DirectionSampler& sample, const Dire
   }
   r.statistic = stat;
   r.dof = std::max(1, used - 1);
-  boost::math::chi_squared dist(r.dof);
-  r.p_value = boost::math::cdf(boost::math::complement(dist, stat));
+  r.p_value = chi_squared_upper_tail(r.dof, stat);
   std::ostringstream os;
   os << "chi2 = " << stat << " with " << r.dof << " dof, p = " << r.p_value
      << ", integral of pdf = " << r.pdf_integral << ", non-finite = " << r.nonfinite;
