@@ -17,7 +17,7 @@ packages=(
   nlohmann-json3-dev    # bench output, manifests, grader results
   libxxhash-dev         # fingerprints of the convergence study's cached references
   libcmark-dev          # write-up Markdown
-  libembree-dev         # optional: bench --embree comparison only
+  libembree-dev         # optional: bench rays --embree comparison only
   clang libclang-rt-dev llvm  # optional: tools/fuzz (libFuzzer, its sanitizers, llvm-cov)
   chromium              # headless browser test of the write-up
 )
