@@ -104,7 +104,8 @@ TEST_F(CliTest, HelpListsTheCourseFlagsAndExitsZero) {
   for (const char* flag : {"--samples", "--light-samples", "--threads", "--max-depth", "--resolution",
                            "--file", "--hemisphere", "--adaptive", "--env", "--aperture",
                            "--focal-distance", "--cell", "--info", "--seed", "--bvh", "--bvh-width", "--leaf-size",
-                           "--normals", "--integrator", "--file-camera", "--course-view", "--stopping-rule"})
+                           "--normals", "--integrator", "--file-camera", "--course-view", "--stopping-rule",
+                           "--camera"})
     EXPECT_NE(run.out.find(flag), std::string::npos) << flag << " missing from:\n" << run.out;
 }
 
@@ -147,6 +148,20 @@ TEST_F(CliTest, BadInputIsNamedAndNeverACrash) {
       {"--integrator direct --mis -f a.png " + s, 2, "--mis"},  // MIS is Part 4's
       {"--normals --integrator path -f a.png " + s, 2, "--normals"},
       {"--course-view --file-camera -f a.png " + s, 2, "--file-camera"},  // two placements
+      {"--camera 0,0,0,0,0,-1,0,1,0 -f a.png " + s, 2, "ten numbers"},      // nine
+      {"--camera 0,0,0,0,0,-1,0,1,0,60,1 -f a.png " + s, 2, "ten numbers"}, // eleven
+      {"--camera 0,0,0,0,0,-1,0,1,0,wide -f a.png " + s, 2, "fov"},
+      {"--camera 0,0,x,0,0,-1,0,1,0,60 -f a.png " + s, 2, "pz"},
+      {"--camera 0,0,0,0,0,-1,0,1,0,nan -f a.png " + s, 2, "fov"},
+      {"--camera 0,0,1e39,0,0,-1,0,1,0,60 -f a.png " + s, 2, "pz"},       // overflows a float
+      {"--camera ,0,0,0,0,-1,0,1,0,60 -f a.png " + s, 2, "px"},
+      {"--camera 1,2,3,1,2,3,0,1,0,60 -f a.png " + s, 2, "same point"},
+      {"--camera 0,0,0,0,0,-1,0,0,0,60 -f a.png " + s, 2, "up direction"},
+      {"--camera 0,0,0,0,0,-1,0,0,2,60 -f a.png " + s, 2, "along the direction of view"},
+      {"--camera 0,0,0,0,0,-1,0,1,0,0 -f a.png " + s, 2, "field of view"},
+      {"--camera 0,0,0,0,0,-1,0,1,0,180 -f a.png " + s, 2, "field of view"},
+      {"--camera 0,0,0,0,0,-1,0,1,0,60 --file-camera -f a.png " + s, 2, "--file-camera"},
+      {"--camera 0,0,0,0,0,-1,0,1,0,60 --course-view -f a.png " + s, 2, "--course-view"},
   };
   for (const Case& c : cases) {
     Outcome run = pathtracer(c.args);
@@ -157,6 +172,33 @@ TEST_F(CliTest, BadInputIsNamedAndNeverACrash) {
     EXPECT_EQ(run.err.find("terminate"), std::string::npos) << c.args << "\n" << run.err;
   }
   EXPECT_FALSE(fs::exists(file("a.png")));  // no bad command line rendered anything
+}
+
+// --camera places the camera where it says: the quad scene's own camera (at the origin, looking
+// down -Z, 60 degrees) given by --camera renders the file camera's image to the byte, and a camera
+// turned to look away from the quad sees nothing of it.
+TEST_F(CliTest, CameraOptionPlacesTheCamera) {
+  const std::string s = quote(scene());
+  ASSERT_EQ(pathtracer("--normals -r 40 20 --file-camera -f file.png " + s).exit_code, 0);
+  Outcome same = pathtracer("--normals -r 40 20 --camera 0,0,0,0,0,-1,0,1,0,60 -f same.png " + s);
+  ASSERT_EQ(same.exit_code, 0) << same.err;
+  const pt::Image a = pt::read_image(file("file.png")), b = pt::read_image(file("same.png"));
+  ASSERT_EQ(a.pixels().size(), b.pixels().size());
+  EXPECT_TRUE(a.pixels() == b.pixels()) << "--camera at the file's own camera drew another image";
+  EXPECT_NEAR(b.at(20, 10).z, 1.0f, 0.01f);  // the quad, facing the camera
+
+  Outcome away = pathtracer("--normals -r 40 20 --camera 0,0,0,0,0,1,0,1,0,60 -f away.png " + s);
+  ASSERT_EQ(away.exit_code, 0) << away.err;
+  const pt::Image c = pt::read_image(file("away.png"));
+  for (const glm::vec3& v : c.pixels()) ASSERT_EQ(v, glm::vec3(0.0f)) << "looking away, yet a hit";
+
+  // Off to the side (eye at x = 0.6, looking straight down -Z): the image spans x from -0.55 to
+  // 1.75 at the quad, whose right edge (x = 1) is then two thirds of the way across.
+  Outcome side = pathtracer("--normals -r 40 20 --camera 0.6,0,0,0.6,0,-1,0,1,0,60 -f side.png " + s);
+  ASSERT_EQ(side.exit_code, 0) << side.err;
+  const pt::Image d = pt::read_image(file("side.png"));
+  EXPECT_NEAR(d.at(10, 10).z, 1.0f, 0.01f);      // left of centre: the quad
+  EXPECT_EQ(d.at(39, 10), glm::vec3(0.0f));      // far right: past its edge
 }
 
 TEST_F(CliTest, BrokenSceneFileIsAnInputError) {

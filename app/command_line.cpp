@@ -185,6 +185,13 @@ int parse_command_line(int argc, char** argv, CommandLine* command, std::ostream
                "diagonal from its centre, and the pixels of its 800 x 600 window (at -r 480 360 the "
                "field of view's tangent x 0.6), so images compare with the course's")
       ->excludes(file_camera);
+  std::string camera;
+  app.add_option("--camera", camera,
+                 "Place the camera: eye px,py,pz looking at tx,ty,tz with up ux,uy,uz and a "
+                 "horizontal field of view of fov degrees (the viewer's \"use this view\" writes it)")
+      ->type_name("px,py,pz,tx,ty,tz,ux,uy,uz,fov")
+      ->excludes(file_camera)
+      ->excludes("--course-view");
 
   if (auto code = parse_or_exit(app, argc, argv, "pathtracer", "Run with --help for the options.",
                                 out, err))
@@ -223,6 +230,14 @@ int parse_command_line(int argc, char** argv, CommandLine* command, std::ostream
     if (integrator == "path") s.integrator = IntegratorChoice::path;
     if (no_rr) s.russian_roulette = false;
     s.seed = parse_seed(seed);
+    if (app.count("--camera")) {
+      try {
+        c.camera = parse_camera_view(camera);
+      } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+      }
+      c.camera_given = true;
+    }
     if (app.count("--bounce") && s.only_bounce < 0)
       throw UsageError("--bounce must be 0 or more (got " + std::to_string(s.only_bounce) + ")");
     if (app.count("--env") && s.environment_map.empty())

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "app/camera_view.h"
 #include "framework/render/render_settings.h"
 
 namespace pt {
@@ -22,6 +23,8 @@ struct CommandLine {
   bool info = false;             ///< --info: describe the scene, render nothing
   bool file_camera = false;      ///< --file-camera: do not centre the camera on the scene
   bool course_view = false;      ///< --course-view: frame the scene as the course's renderer does at -r
+  bool camera_given = false;     ///< --camera: place the camera at `camera` instead of the file's
+  CameraView camera;
 };
 
 /// A command line that cannot be honoured; what() names the flag and what is wrong.

@@ -79,7 +79,9 @@ int run(int argc, char** argv) {
     check_memory();
   }
   try {
-    if (command.course_view)
+    if (command.camera_given)
+      apply_camera_view(command.camera, &scene.camera);
+    else if (command.course_view)
       place_course_camera(scene.bounds(), settings.width, settings.height, &scene.camera);
     else if (!command.file_camera)
       centre_camera_on(scene.bounds(), &scene.camera);
