@@ -17,9 +17,10 @@ packages=(
   nlohmann-json3-dev    # bench output, manifests, grader results
   libxxhash-dev         # fingerprints of the convergence study's cached references
   libcmark-dev          # write-up Markdown
+  libcpp-httplib-dev    # the viewer's web server (127.0.0.1 only)
   libembree-dev         # optional: bench --embree comparison only
   clang libclang-rt-dev llvm  # optional: tools/fuzz (libFuzzer, its sanitizers, llvm-cov)
-  chromium              # headless browser test of the write-up
+  chromium              # headless browser tests of the write-up and the viewer
 )
 
 SUDO=""
