@@ -8,7 +8,8 @@
 //  4. a clicked pixel lists its samples, their rays and what each bounce added, with the value
 //     the image shows;
 //  5. "use this view" after orbiting renders the pathtracer's image with the --camera it writes;
-//  6. an address without the token is refused; the console stays clean.
+//  6. the sampling panel gives Part 3's diffuse BSDF a chi-square verdict;
+//  7. an address without the token is refused; the console stays clean.
 // Screenshots of each step go to --out (and --shots, when given).
 //
 // node browser_test.js --viewer EXE --pathtracer EXE --scene FILE --out DIR [--shots DIR]
@@ -202,6 +203,15 @@ async function main() {
     await shoot(page, '4-pixel-paths.png');
     await page.check('input[name=mouse][value=cell]');
 
+    // 6. Sampling: Part 3's diffuse BSDF against its density (a verdict either way: the handout's
+    // stub fails it, with the reason).
+    await page.selectOption('#sampler', 'diffuse_bsdf');
+    await page.click('#sampling-run');
+    await page.waitForFunction(() => /PASSES|FAILS/.test(document.getElementById('sampling-verdict').textContent), null, { timeout: 60000 });
+    console.log(`sampling: ${(await page.textContent('#sampling-verdict')).split('\n')[0]}`);
+    await page.locator('#sampling-panel').scrollIntoViewIfNeeded();
+    await shoot(page, '6-sampling.png');
+
     // 5. Orbit the preview, "use this view", and the pathtracer's --camera image.
     await page.mouse.move(pv.x + pv.width * 0.5, pv.y + pv.height * 0.5);
     await page.mouse.down();
@@ -212,7 +222,7 @@ async function main() {
     compare('"use this view"', await pagePixels(page), await pathtracerPixels(a, page, commandFlags(viewed.command, a.scene), path.join(out, 'cli-view.png')), problems);
     await shoot(page, '5-use-this-view.png');
 
-    // 6. Without the token, nothing.
+    // 7. Without the token, nothing.
     const other = await context.newPage();
     await context.clearCookies();
     const refused = await other.goto(`http://127.0.0.1:${port}/`);

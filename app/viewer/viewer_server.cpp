@@ -10,6 +10,8 @@
 
 #include <httplib.h>
 
+#include "app/viewer/sampling_check.h"
+
 namespace pt {
 
 namespace {
@@ -19,10 +21,14 @@ using nlohmann::json;
 /// Requests the page sends are small JSON objects: anything larger is refused unread.
 constexpr size_t kMaxRequestBytes = 64 * 1024;
 
+/// JSON replies are sent as "application/json; charset=utf-8": cpp-httplib compresses only the
+/// bare "application/json", and its Brotli at the default quality took seconds over a scene's
+/// triangles, which over the loopback buys nothing.
 void send_json(httplib::Response& res, const json& body, int status = 200) {
   res.status = status;
   // error_handler_t::replace: a stub's odd bytes in a name never turn a reply into an exception.
-  res.set_content(body.dump(-1, ' ', false, json::error_handler_t::replace), "application/json");
+  res.set_content(body.dump(-1, ' ', false, json::error_handler_t::replace),
+                  "application/json; charset=utf-8");
 }
 
 void send_error(httplib::Response& res, int status, const std::string& message) {
@@ -116,8 +122,8 @@ const char* static_file_type(const std::string& path) {
   static const std::pair<const char*, const char*> kFiles[] = {
       {"/index.html", "text/html; charset=utf-8"},
       {"/viewer.css", "text/css; charset=utf-8"},
-      {"/viewer.js", "text/javascript; charset=utf-8"},
-      {"/preview.js", "text/javascript; charset=utf-8"},
+      {"/viewer.js", "application/javascript; charset=utf-8"},
+      {"/preview.js", "application/javascript; charset=utf-8"},
   };
   for (const auto& [name, type] : kFiles)
     if (path == name) return type;
@@ -261,6 +267,13 @@ void ViewerServer::routes() {
   s.Post("/api/pixel", [this](const httplib::Request& req, httplib::Response& res) {
     const json j = request_json(req);
     send_json(res, session_->explain_pixel(request_flags(j), request_int(j, "x"), request_int(j, "y")));
+  });
+
+  s.Post("/api/sampling", [](const httplib::Request& req, httplib::Response& res) {
+    const json j = request_json(req);
+    if (!j.contains("name") || !j["name"].is_string()) throw std::invalid_argument("name must be a sampler's name");
+    const long samples = j.contains("samples") && j["samples"].is_number_integer() ? j["samples"].get<long>() : 200000;
+    send_json(res, sampling_check(j["name"].get<std::string>(), samples));
   });
 
   // What a handler throws (flags the command line refuses, a scene that did not load, a

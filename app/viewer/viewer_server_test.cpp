@@ -318,3 +318,39 @@ TEST(ViewerServer, TheBvhIsPartTwosTreeWithItsCosts) {
 
 }  // namespace
 }  // namespace pt
+
+namespace pt {
+namespace {
+
+// The sampling panel runs the tests' chi-square check: the framework's warps pass it, their
+// histogram holds every sample, and a name or count it does not know is a message.
+TEST(ViewerServer, SamplingPanelRunsTheChiSquareTest) {
+  Viewer v(PT_VIEWER_TEST_SCENE);
+  for (const char* name : {"cosine_hemisphere", "uniform_sphere"}) {
+    auto r = v.post("/api/sampling", {{"name", name}, {"samples", 100000}});
+    ASSERT_TRUE(r);
+    ASSERT_EQ(r->status, 200) << r->body;
+    const json j = json::parse(r->body);
+    EXPECT_TRUE(j.value("passes", false)) << name << ": " << j.value("summary", "");
+    double total = 0.0;
+    for (const json& o : j["observed"]) total += o.get<double>();
+    EXPECT_EQ(total, 100000.0) << name;
+    EXPECT_EQ(j["observed"].size(), size_t(j["cos_bins"].get<int>() * j["phi_bins"].get<int>() + 1));
+    EXPECT_GT(j["points"].size(), 3000u);
+  }
+  // The uniform hemisphere's histogram has no sample below the surface.
+  auto h = v.post("/api/sampling", {{"name", "uniform_hemisphere"}, {"samples", 50000}});
+  ASSERT_TRUE(h);
+  const json hj = json::parse(h->body);
+  const int cols = hj["phi_bins"].get<int>(), rows = hj["cos_bins"].get<int>();
+  for (int cell = 0; cell < rows / 2 * cols; ++cell) EXPECT_EQ(hj["observed"][size_t(cell)].get<double>(), 0.0);
+  for (const json& bad : {json{{"name", "square_to_nothing"}}, json{{"name", "cosine_hemisphere"}, {"samples", 10}},
+                          json{{"samples", 1000}}}) {
+    auto r = v.post("/api/sampling", bad);
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 400) << bad.dump();
+  }
+}
+
+}  // namespace
+}  // namespace pt

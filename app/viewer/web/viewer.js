@@ -75,6 +75,7 @@ async function render(withCell) {
     const s = await api('/api/render', { flags: flags(withCell) });
     state.shownDone = -1;
     onStatus(s);
+    pollSoon();
   } catch (e) {
     showError(e.message);
   }
@@ -137,13 +138,22 @@ function onStatus(s) {
   $('summary').textContent = text;
 }
 
+let pollTimer = null;
 async function poll() {
+  clearTimeout(pollTimer);
+  pollTimer = null;
   try {
     onStatus(await api(`/api/status?log=${state.logNext}`));
   } catch (e) {
     showError(`the viewer does not answer (${e.message}): is it still running in its terminal?`);
   }
-  setTimeout(poll, state.status && state.status.state === 'rendering' ? 100 : 400);
+  if (!pollTimer) pollTimer = setTimeout(poll, state.status && state.status.state === 'rendering' ? 100 : 400);
+}
+
+/// Asks for the status at once (a render just started), rather than at the next slow tick.
+function pollSoon() {
+  clearTimeout(pollTimer);
+  pollTimer = setTimeout(poll, 30);
 }
 
 // ---- the render's mouse: a cell, or a pixel ------------------------------------------------
@@ -306,7 +316,10 @@ function showBvh() {
     const i = state.node;
     boxLines(i, [1, 1, 1], l);
     if (b.left[i] >= 0) { boxLines(b.left[i], [0.2, 1, 0.4], l); boxLines(b.right[i], [1, 0.3, 0.6], l); }
-    leafTriangles(leavesBelow(i, 2000), tris);
+    // Its primitives in orange, when there are few enough to draw (a node near the root holds
+    // most of the scene, and its box says as much).
+    const leaves = leavesBelow(i, 2001);
+    if (leaves.length <= 2000) leafTriangles(leaves, tris);
     const box = b.boxes.slice(6 * i, 6 * i + 6).map(fmt);
     info = `node ${i}${b.left[i] < 0 ? ' (leaf)' : ''}: depth ${b.depth[i]}, ${b.primitives_below[i]} primitives` +
       `${b.left[i] < 0 ? ` (order[${b.first[i]} .. ${b.first[i] + b.count[i]}))` : ''}, SAH cost ${b.sah_cost[i].toFixed(3)}` +
@@ -362,6 +375,48 @@ async function pick(x, y) {
   }
 }
 
+// ---- sampling, seen -------------------------------------------------------------------------
+
+function heat(canvas, values, rows, cols, top) {
+  const g = canvas.getContext('2d'), cw = canvas.width / cols, ch = canvas.height / rows;
+  for (let r = 0; r < rows; ++r) for (let c = 0; c < cols; ++c) {
+    const v = values[r * cols + c];
+    const t = v === null ? 0 : Math.min(1, v / (top || 1));
+    // dark blue through teal to yellow
+    g.fillStyle = `rgb(${Math.round(30 + 225 * t * t)},${Math.round(30 + 200 * t)},${Math.round(90 + 60 * (1 - t))})`;
+    // row r holds cos(theta) in [-1 + 2r/rows, ...): drawn with cos = 1 at the top
+    g.fillRect(c * cw, (rows - 1 - r) * ch, Math.ceil(cw), Math.ceil(ch));
+  }
+}
+
+async function runSampling() {
+  showError('');
+  $('sampling-verdict').textContent = 'sampling...';
+  try {
+    const r = await api('/api/sampling', { name: $('sampler').value, samples: Number($('sampling-n').value) });
+    state.sampling = r;
+    const v = $('sampling-verdict');
+    v.className = r.passes ? 'mono pass' : 'mono fail';
+    v.textContent = `${r.says}: ${r.passes ? 'PASSES' : 'FAILS'} the chi-square test at the 1% level\n${r.summary}` +
+      (r.nonfinite ? `\n${r.nonfinite} samples or densities were NaN or infinite` : '') +
+      (r.pdf_integral !== null && Math.abs(r.pdf_integral - 1) > 2e-3 ? `\nthe density integrates to ${r.pdf_integral}, not 1` : '');
+    const cells = r.cos_bins * r.phi_bins;
+    const top = Math.max(...r.observed.slice(0, cells), ...r.expected.slice(0, cells).map((x) => x || 0));
+    heat($('sampling-observed'), r.observed, r.cos_bins, r.phi_bins, top);
+    heat($('sampling-expected'), r.expected, r.cos_bins, r.phi_bins, top);
+    const c = $('sampling-points'), g = c.getContext('2d'), R = c.width / 2 - 4;
+    g.fillStyle = '#111'; g.fillRect(0, 0, c.width, c.height);
+    g.strokeStyle = '#666'; g.beginPath(); g.arc(c.width / 2, c.height / 2, R, 0, 2 * Math.PI); g.stroke();
+    for (let i = 0; i < r.points.length; i += 3) {
+      g.fillStyle = r.points[i + 2] < 0 ? '#f44' : '#8cf';
+      g.fillRect(c.width / 2 + R * r.points[i] - 1, c.height / 2 - R * r.points[i + 1] - 1, 2, 2);
+    }
+  } catch (e) {
+    $('sampling-verdict').textContent = '';
+    showError(e.message);
+  }
+}
+
 // ---- the scene and its camera ---------------------------------------------------------------
 
 let preview;
@@ -400,6 +455,7 @@ async function start() {
   $('reset-view').onclick = () => { state.camera = null; loadScene().catch((e) => showError(e.message)); };
   $('show-rate').onchange = () => state.status && refreshImage(state.status);
   $('bvh-load').onclick = loadBvh;
+  $('sampling-run').onclick = runSampling;
   $('bvh-parent').onclick = () => { state.node = state.bvh.parent[state.node]; showBvh(); };
   $('bvh-left').onclick = () => { state.node = state.bvh.left[state.node]; showBvh(); };
   $('bvh-right').onclick = () => { state.node = state.bvh.right[state.node]; showBvh(); };
