@@ -354,3 +354,36 @@ TEST(ViewerServer, SamplingPanelRunsTheChiSquareTest) {
 
 }  // namespace
 }  // namespace pt
+
+namespace pt {
+namespace {
+
+// Part 5's sample-rate image: drawn after an adaptive render, refused before one.
+TEST(ViewerServer, SampleRateImageAfterAnAdaptiveRender) {
+  Viewer v(PT_VIEWER_TEST_SCENE);
+  const std::string rate = std::string("/api/image?kind=rate&token=") + kToken;
+  auto plain = v.post("/api/render", {{"flags", {"-r", "24", "18", "-s", "2"}}});
+  ASSERT_TRUE(plain);
+  ASSERT_EQ(v.wait().value("state", ""), "done");
+  auto refused = v.client().Get(rate.c_str());
+  ASSERT_TRUE(refused);
+  EXPECT_EQ(refused->status, 400);
+  EXPECT_NE(refused->body.find("adaptive"), std::string::npos) << refused->body;
+
+  auto adaptive = v.post("/api/render", {{"flags", {"-r", "24", "18", "-s", "64", "-a", "8", "0.2", "-m", "2"}}});
+  ASSERT_TRUE(adaptive);
+  ASSERT_EQ(adaptive->status, 200) << adaptive->body;
+  ASSERT_EQ(v.wait().value("state", ""), "done");
+  auto r = v.client().Get(rate.c_str());
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 200) << r->body;
+  ASSERT_EQ(r->body.size(), 8u + 24u * 18u * 4u);
+  // Where the samples went differs from pixel to pixel: the map is not one colour.
+  bool varies = false;
+  for (size_t i = 8 + 4; i < r->body.size(); i += 4)
+    varies |= r->body.compare(i, 3, r->body, 8, 3) != 0;
+  EXPECT_TRUE(varies);
+}
+
+}  // namespace
+}  // namespace pt
