@@ -240,6 +240,7 @@ async function main() {
   if (real.length) problems.push(`console errors:\n${real.join('\n')}`);
   if (problems.length) fail(problems.join('\n'));
   console.log(`passed; screenshots in ${shots.join(' and ')}`);
+  process.exit(0);
 }
 
 main().catch((e) => fail(e.stack || String(e)));

@@ -87,6 +87,16 @@ int serve(const ViewerCommand& c, const std::string& token, const std::string& c
   return kExitOk;
 }
 
+/// The server's process while the supervisor waits for it: a SIGTERM, SIGINT or SIGHUP sent to
+/// the supervisor (by a test, or a terminal closing) is passed on, so no server outlives it.
+volatile sig_atomic_t g_server_pid = 0;
+
+void pass_on(int sig) {
+  if (g_server_pid > 0) kill(pid_t(g_server_pid), sig);
+  signal(sig, SIG_DFL);
+  raise(sig);
+}
+
 const char* signal_name(int sig) {
   const char* d = strsignal(sig);
   return d ? d : "unknown signal";
@@ -158,7 +168,12 @@ int run(int argc, char** argv) {
     std::cout.flush();
     const pid_t child = fork();
     if (child < 0) return serve(c, token, "", true);
-    if (child == 0) _exit(serve(c, token, note, first));
+    if (child == 0) {
+      for (int sig : {SIGTERM, SIGINT, SIGHUP}) signal(sig, SIG_DFL);
+      _exit(serve(c, token, note, first));
+    }
+    g_server_pid = child;
+    for (int sig : {SIGTERM, SIGINT, SIGHUP}) signal(sig, pass_on);
     int status = 0;
     while (waitpid(child, &status, 0) < 0 && errno == EINTR) {
     }
