@@ -16,7 +16,8 @@ namespace pt {
 
 std::vector<MaterialKind> rendered_material_kinds(const RenderSettings& settings) {
   if (settings.shading == ShadingMode::normals) return {};
-  return {MaterialKind::diffuse, MaterialKind::mirror, MaterialKind::glass, MaterialKind::emission};
+  return {MaterialKind::diffuse, MaterialKind::mirror, MaterialKind::glass, MaterialKind::microfacet,
+          MaterialKind::emission};
 }
 
 namespace {

@@ -14,6 +14,7 @@
 #include <string_view>
 #include <unordered_map>
 #include <unordered_set>
+#include <utility>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -698,8 +699,14 @@ void ColladaReader::read_effect(pugi::xml_node effect, Material& m) {
       } else if (kind == "microfacet") {
         m.kind = MaterialKind::microfacet;
         roughness("alpha");
-        vec("eta", m.eta);
-        vec("k", m.k);
+        // The conductor's complex index of refraction, per channel: neither part is negative.
+        for (auto [field, out] : {std::pair<const char*, glm::vec3*>{"eta", &m.eta}, {"k", &m.k}}) {
+          vec(field, *out);
+          if (out->x < 0.0f || out->y < 0.0f || out->z < 0.0f) {
+            warn(bsdf.child(field), std::string("a negative ") + field + " is impossible; clamped to 0");
+            *out = glm::max(*out, glm::vec3(0.0f));
+          }
+        }
       } else if (kind == "diffuse") {
         m.kind = MaterialKind::diffuse;
         fraction("albedo", m.albedo);
