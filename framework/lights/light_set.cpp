@@ -251,8 +251,101 @@ void store_sample(LightSample* ls, lanes::V3 wi, lanes::V3 L, float pdf, float d
   return true;
 }
 
+// Triangle (a, b, c) as the directions from p to its points: a spherical triangle of corners
+// A, B, C (unit vectors), of angle alpha at A, and of solid angle omega = alpha + beta + gamma − π.
+// usable when it subtends at least kMinSolidAngle (below that the sum of angles loses the
+// difference to rounding, and area sampling's 1/d² is harmless anyway) and is not edge-on.
+struct SphericalTriangle {
+  glm::dvec3 A{0.0}, B{0.0}, C{0.0};
+  double alpha = 0.0, omega = 0.0;
+  bool usable = false;
+};
+constexpr double kMinSolidAngle = 1e-3;
+
+SphericalTriangle spherical_triangle(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b,
+                                     const glm::vec3& c) {
+  SphericalTriangle s;
+  const glm::dvec3 da = glm::dvec3(a) - glm::dvec3(p), db = glm::dvec3(b) - glm::dvec3(p),
+                   dc = glm::dvec3(c) - glm::dvec3(p);
+  const double la = glm::length(da), lb = glm::length(db), lc = glm::length(dc);
+  if (!(la > 0.0 && lb > 0.0 && lc > 0.0)) return s;
+  s.A = da / la, s.B = db / lb, s.C = dc / lc;
+  // The angle at a corner is the one between the great circles through it: between the normals
+  // of the planes each pair of corners spans with the centre.
+  const glm::dvec3 n_ab = glm::cross(s.A, s.B), n_bc = glm::cross(s.B, s.C), n_ca = glm::cross(s.C, s.A);
+  const double l_ab = glm::length(n_ab), l_bc = glm::length(n_bc), l_ca = glm::length(n_ca);
+  if (!(l_ab > 1e-12 && l_bc > 1e-12 && l_ca > 1e-12)) return s;
+  auto angle = [](const glm::dvec3& u, double lu, const glm::dvec3& v, double lv) {
+    return std::acos(std::clamp(glm::dot(u, v) / (lu * lv), -1.0, 1.0));
+  };
+  s.alpha = angle(n_ab, l_ab, -n_ca, l_ca);
+  const double beta = angle(n_bc, l_bc, -n_ab, l_ab);
+  const double gamma_ = angle(n_ca, l_ca, -n_bc, l_bc);
+  s.omega = s.alpha + beta + gamma_ - M_PI;
+  s.usable = s.omega >= kMinSolidAngle && std::isfinite(s.omega) &&
+             std::abs(glm::dot(s.A, n_bc)) > 1e-9;  // not seen edge-on
+  return s;
+}
+
+// A direction uniform in solid angle over spherical triangle s (Arvo 1995): the sub-triangle
+// A B C' of area u.x·omega fixes C' on the arc AC, then the direction lies on the arc B C' at
+// the cosine 1 − u.y (1 − C'·B) from B.
+glm::dvec3 sample_spherical_triangle(const SphericalTriangle& s, glm::vec2 u) {
+  const double area = double(u.x) * s.omega;
+  const double sn = std::sin(area - s.alpha), cs = std::cos(area - s.alpha);
+  const double ca = std::cos(s.alpha), sa = std::sin(s.alpha);
+  const double uu = cs - ca;
+  const double vv = sn + sa * glm::dot(s.A, s.B);
+  const double q = std::clamp(((vv * cs - uu * sn) * ca - vv) / ((vv * sn + uu * cs) * sa), -1.0, 1.0);
+  const glm::dvec3 along_ac = s.C - glm::dot(s.C, s.A) * s.A;
+  const glm::dvec3 c1 = q * s.A + std::sqrt(std::max(0.0, 1.0 - q * q)) * glm::normalize(along_ac);
+  const double z = 1.0 - double(u.y) * (1.0 - glm::dot(c1, s.B));
+  const glm::dvec3 along = c1 - glm::dot(c1, s.B) * s.B;
+  const double len = glm::length(along);
+  if (!(len > 0.0)) return s.B;
+  return z * s.B + std::sqrt(std::max(0.0, 1.0 - z * z)) * (along / len);
+}
+
+// Where a mesh light's triangle is seen from p under a usable solid angle, its point is drawn
+// uniformly in that solid angle, not by area: a point just above a two-sided light (CBempty's
+// ceiling, a centimetre above its panel) saw area sampling's 1/d² weights, unbiased but so
+// heavy-tailed that a thousand samples a pixel left whole blocks darker than MIS. The point is
+// where the direction meets the triangle's plane, written as barycentric terms as area sampling
+// writes it (so its error bound is the same); the density is the pick's over omega.
+bool sample_triangle_by_solid_angle(const SampledLight& l, const SampledLight::SampledTriangle& t,
+                                    const SphericalTriangle& s, float pick, const glm::vec3& p,
+                                    glm::vec2 u, LightSample* ls) {
+  const glm::dvec3 w = sample_spherical_triangle(s, u);
+  const glm::dvec3 a(t.a), b(t.b), c(t.c), o(p);
+  const glm::dvec3 e1 = b - a, e2 = c - a, n = glm::cross(e1, e2);
+  const double denom = glm::dot(w, n);
+  if (!(std::abs(denom) > 0.0)) return false;
+  const glm::dvec3 q = o + (glm::dot(a - o, n) / denom) * w;
+  const glm::dvec3 v = q - a;
+  const double d00 = glm::dot(e1, e1), d01 = glm::dot(e1, e2), d11 = glm::dot(e2, e2);
+  const double d20 = glm::dot(v, e1), d21 = glm::dot(v, e2), den = d00 * d11 - d01 * d01;
+  if (!(den > 0.0)) return false;
+  double wb = std::max(0.0, (d11 * d20 - d01 * d21) / den), wc = std::max(0.0, (d00 * d21 - d01 * d20) / den);
+  double wa = std::max(0.0, 1.0 - wb - wc);
+  const double sum = wa + wb + wc;
+  wa /= sum, wb /= sum, wc /= sum;
+  if (!finish_surface_sample(l, p, float(wa) * t.a, float(wb) * t.b, float(wc) * t.c, t.n, false,
+                             nullptr, ls))
+    return false;
+  if (ls->pdf > 0.0f) ls->pdf = float(double(pick) / s.omega);
+  return true;
+}
+
+// The probability of picking triangle (a, b, c) of light l: its area over the light's, the area
+// computed as the set computed it.
+float triangle_pick_probability(const SampledLight& l, const glm::vec3& a, const glm::vec3& b,
+                                const glm::vec3& c) {
+  return 0.5f * glm::length(glm::cross(b - a, c - a)) * l.inv_area;
+}
+
 // A point on one of light l's triangles, picked with probability area / l.area and uniformly on
-// it; one-sided (a panel) or not. Fills ls and returns whether the point can send light towards
+// it (by solid angle where a mesh light's triangle is seen under a usable one, above); one-sided
+// (a panel) or not. Fills ls and returns whether the point can send light towards
 // p. Every light sample of a mesh light, and of a panel that is not a quad, comes here: its
 // triangle's corners and normal are read from the light's own table, and 1 / area is the light's.
 bool sample_triangles(const SampledLight& l, const glm::vec3& p, glm::vec2 u, bool one_sided,
@@ -262,6 +355,12 @@ bool sample_triangles(const SampledLight& l, const glm::vec3& p, glm::vec2 u, bo
   const float u0 = std::clamp(x * float(l.triangle_pick.size()) - float(cell), 0.0f, 1.0f);
   const SampledLight::SampledTriangle& t = l.sampled_triangles[cell];
   if (t.n == glm::vec3(0.0f)) return false;
+  if (l.kind == SampledLightKind::mesh) {
+    const SphericalTriangle s = spherical_triangle(p, t.a, t.b, t.c);
+    if (s.usable)
+      return sample_triangle_by_solid_angle(l, t, s, triangle_pick_probability(l, t.a, t.b, t.c), p,
+                                            {u0, u.y}, ls);
+  }
   const glm::vec3 bary = square_to_uniform_triangle({u0, u.y});
   return finish_surface_sample(l, p, bary.x * t.a, bary.y * t.b, bary.z * t.c, t.n, one_sided,
                                nullptr, ls);
@@ -771,6 +870,11 @@ float LightSet::pdf(int index, const SurfaceHit& hit, const glm::vec3& wi,
     }
     case SampledLightKind::mesh: {
       if (!on_light || light_of_primitive(on_light->primitive) != index) return 0.0f;
+      const Triangle& tri = scene_.triangles[on_light->primitive];
+      const glm::vec3 &a = scene_.positions[tri.v[0]], &b = scene_.positions[tri.v[1]],
+                      &c = scene_.positions[tri.v[2]];
+      const SphericalTriangle s = spherical_triangle(hit.p, a, b, c);
+      if (s.usable) return float(double(triangle_pick_probability(l, a, b, c)) / s.omega);
       return area_to_solid_angle_pdf(1.0f / l.area, glm::length(on_light->p - hit.p),
                                      glm::dot(wi, on_light->ng));
     }

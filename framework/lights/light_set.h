@@ -22,8 +22,8 @@
 //   scene is it, so no ray can hit it (as in the course, the camera does not see it), and
 //   hemisphere sampling cannot see it either, as it cannot see a point light.
 // - Every other emissive triangle becomes a light: one mesh light per emissive material, its
-//   triangles picked in proportion to their area, emitting its material's emission on both sides
-//   (as the course's emissive meshes do). Every emissive sphere becomes a sphere light.
+//   triangles picked by area, each sampled by the solid angle it subtends where usable (else by
+//   area), emitting on both sides (as the course's meshes do). Every emissive sphere: a sphere light.
 // - Ambient lights add up to one uniform environment; -e adds an image-based one. Both are
 //   sampled as lights; a ray that misses everything sees their sum.
 // - Lights that cannot emit (zero area, zero radiance, degenerate triangles) are left out, so

@@ -197,9 +197,10 @@ SurfaceHit point_around_the_panel(Rng& rng, int i) {
   return at;
 }
 
-// Panels (one-sided) and meshes (two-sided), seen from points all around them, some on the light
-// itself, at zero coordinates of either sign and far away: every field of every sample is the
-// definition's, to the bit.
+// Panels (one-sided), seen from points all around them, some on the light itself, at zero
+// coordinates of either sign and far away: every field of every sample is the definition's, to
+// the bit. (A mesh's triangle seen under a usable solid angle is sampled by that solid angle, held
+// to its density by the chi-square tests and light_set_near_field_test.)
 TEST(FrameworkLightSet, TriangleLightSamplesAreTheirDefinitionBitForBit) {
   Scene s = panel_on_light(0.4f, 0.3f, 10.0f, {0.8f, 0, 0}, {0, 0.6f, 0}, 10.0f);
   s.positions[3].x = -0.2f;  // a trapezoid: a panel of triangles, not a quad
@@ -218,7 +219,7 @@ TEST(FrameworkLightSet, TriangleLightSamplesAreTheirDefinitionBitForBit) {
   for (int i = 0; i < 20000; ++i) {
     const SurfaceHit at = point_around_the_panel(rng, i);
     const glm::vec2 u = rng.next_2d();
-    for (int k = 0; k < 2; ++k) {
+    for (int k = 0; k < 1; ++k) {
       const LightSample got = lights.sample(k, at, u);
       const LightSample want = triangle_sample_by_definition(lights.lights()[k], at.p, u, k == 0);
       expect_same_sample(got, want, i);
@@ -226,7 +227,7 @@ TEST(FrameworkLightSet, TriangleLightSamplesAreTheirDefinitionBitForBit) {
       kept += want.pdf > 0.0f;
     }
   }
-  EXPECT_GT(kept, 20000) << "most samples should reach the point";
+  EXPECT_GT(kept, 10000) << "most samples should reach the point";
 }
 
 TEST(FrameworkLightSet, APanelThatMatchesItsLightSaysNothing) {
