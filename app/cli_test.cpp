@@ -104,7 +104,8 @@ TEST_F(CliTest, HelpListsTheCourseFlagsAndExitsZero) {
   for (const char* flag : {"--samples", "--light-samples", "--threads", "--max-depth", "--resolution",
                            "--file", "--hemisphere", "--adaptive", "--env", "--aperture",
                            "--focal-distance", "--cell", "--info", "--seed", "--bvh", "--bvh-width", "--leaf-size",
-                           "--normals", "--integrator", "--file-camera", "--course-view", "--stopping-rule"})
+                           "--normals", "--integrator", "--file-camera", "--course-view", "--stopping-rule",
+                           "--camera-settings", "--accumulate-bounces", "--camera"})
     EXPECT_NE(run.out.find(flag), std::string::npos) << flag << " missing from:\n" << run.out;
 }
 
@@ -147,6 +148,20 @@ TEST_F(CliTest, BadInputIsNamedAndNeverACrash) {
       {"--integrator direct --mis -f a.png " + s, 2, "--mis"},  // MIS is Part 4's
       {"--normals --integrator path -f a.png " + s, 2, "--normals"},
       {"--course-view --file-camera -f a.png " + s, 2, "--file-camera"},  // two placements
+      {"--camera 0,0,0,0,0,-1,0,1,0 -f a.png " + s, 2, "ten numbers"},      // nine
+      {"--camera 0,0,0,0,0,-1,0,1,0,60,1 -f a.png " + s, 2, "ten numbers"}, // eleven
+      {"--camera 0,0,0,0,0,-1,0,1,0,wide -f a.png " + s, 2, "fov"},
+      {"--camera 0,0,x,0,0,-1,0,1,0,60 -f a.png " + s, 2, "pz"},
+      {"--camera 0,0,0,0,0,-1,0,1,0,nan -f a.png " + s, 2, "fov"},
+      {"--camera 0,0,1e39,0,0,-1,0,1,0,60 -f a.png " + s, 2, "pz"},       // overflows a float
+      {"--camera ,0,0,0,0,-1,0,1,0,60 -f a.png " + s, 2, "px"},
+      {"--camera 1,2,3,1,2,3,0,1,0,60 -f a.png " + s, 2, "same point"},
+      {"--camera 0,0,0,0,0,-1,0,0,0,60 -f a.png " + s, 2, "up direction"},
+      {"--camera 0,0,0,0,0,-1,0,0,2,60 -f a.png " + s, 2, "along the direction of view"},
+      {"--camera 0,0,0,0,0,-1,0,1,0,0 -f a.png " + s, 2, "field of view"},
+      {"--camera 0,0,0,0,0,-1,0,1,0,180 -f a.png " + s, 2, "field of view"},
+      {"--camera 0,0,0,0,0,-1,0,1,0,60 --file-camera -f a.png " + s, 2, "--file-camera"},
+      {"--camera 0,0,0,0,0,-1,0,1,0,60 --course-view -f a.png " + s, 2, "--course-view"},
   };
   for (const Case& c : cases) {
     Outcome run = pathtracer(c.args);
@@ -157,6 +172,33 @@ TEST_F(CliTest, BadInputIsNamedAndNeverACrash) {
     EXPECT_EQ(run.err.find("terminate"), std::string::npos) << c.args << "\n" << run.err;
   }
   EXPECT_FALSE(fs::exists(file("a.png")));  // no bad command line rendered anything
+}
+
+// --camera places the camera where it says: the quad scene's own camera (at the origin, looking
+// down -Z, 60 degrees) given by --camera renders the file camera's image to the byte, and a camera
+// turned to look away from the quad sees nothing of it.
+TEST_F(CliTest, CameraOptionPlacesTheCamera) {
+  const std::string s = quote(scene());
+  ASSERT_EQ(pathtracer("--normals -r 40 20 --file-camera -f file.png " + s).exit_code, 0);
+  Outcome same = pathtracer("--normals -r 40 20 --camera 0,0,0,0,0,-1,0,1,0,60 -f same.png " + s);
+  ASSERT_EQ(same.exit_code, 0) << same.err;
+  const pt::Image a = pt::read_image(file("file.png")), b = pt::read_image(file("same.png"));
+  ASSERT_EQ(a.pixels().size(), b.pixels().size());
+  EXPECT_TRUE(a.pixels() == b.pixels()) << "--camera at the file's own camera drew another image";
+  EXPECT_NEAR(b.at(20, 10).z, 1.0f, 0.01f);  // the quad, facing the camera
+
+  Outcome away = pathtracer("--normals -r 40 20 --camera 0,0,0,0,0,1,0,1,0,60 -f away.png " + s);
+  ASSERT_EQ(away.exit_code, 0) << away.err;
+  const pt::Image c = pt::read_image(file("away.png"));
+  for (const glm::vec3& v : c.pixels()) ASSERT_EQ(v, glm::vec3(0.0f)) << "looking away, yet a hit";
+
+  // Off to the side (eye at x = 0.6, looking straight down -Z): the image spans x from -0.55 to
+  // 1.75 at the quad, whose right edge (x = 1) is then two thirds of the way across.
+  Outcome side = pathtracer("--normals -r 40 20 --camera 0.6,0,0,0.6,0,-1,0,1,0,60 -f side.png " + s);
+  ASSERT_EQ(side.exit_code, 0) << side.err;
+  const pt::Image d = pt::read_image(file("side.png"));
+  EXPECT_NEAR(d.at(10, 10).z, 1.0f, 0.01f);      // left of centre: the quad
+  EXPECT_EQ(d.at(39, 10), glm::vec3(0.0f));      // far right: past its edge
 }
 
 TEST_F(CliTest, BrokenSceneFileIsAnInputError) {
@@ -250,4 +292,104 @@ TEST_F(CliTest, AMissingImageModuleIsNamedWithThePlacesLookedIn) {
   EXPECT_NE(run.err.find("pt_image_oiio.so"), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("nowhere"), std::string::npos) << run.err;
   EXPECT_FALSE(fs::exists(file("lost.png")));
+}
+
+// The quad scene lit by a point light behind the camera, so an image says what the flags did.
+std::string lit_quad_scene() {
+  std::string s = kQuadScene;
+  s.insert(s.find("  <library_cameras>"),
+           "  <library_lights><light id=\"lamp\"><technique_common><point><color>3 3 3</color>"
+           "</point></technique_common></light></library_lights>\n");
+  s.insert(s.find("      <node id=\"quad\">"),
+           "      <node id=\"lamp\"><translate>0.3 0.2 1</translate><instance_light url=\"#lamp\"/></node>\n");
+  return s;
+}
+
+bool same_pixels(const pt::Image& a, const pt::Image& b) {
+  if (a.width() != b.width() || a.height() != b.height()) return false;
+  for (int y = 0; y < a.height(); ++y)
+    for (int x = 0; x < a.width(); ++x)
+      if (a.at(x, y) != b.at(x, y)) return false;
+  return true;
+}
+
+TEST_F(CliTest, TheCourseCommandLinesRunWithOptionsOnEitherSideOfTheScene) {
+  std::ofstream(file("lit.dae")) << lit_quad_scene();
+  // The course's own command lines (its README's and write-up's), with its scene paths replaced
+  // by this scene, its samples cut and 2 threads for 8, so the test takes seconds. The course
+  // parses them with getopt, which takes the options on either side of the scene.
+  struct Line {
+    std::string args;
+    std::string size;  // what -r asked for, as the summary prints it
+  };
+  const Line lines[] = {
+      {"-t 2 -s 4 -l 16 -m 6 -r 48 36 -f spheres.png lit.dae", "48x36"},
+      {"-t 2 -s 4 -l 1 -m 5 -r 48 36 -f CBbunny.png lit.dae", "48x36"},
+      {"-t 2 -s 4 -l 32 -m 6 -H -f CBbunny_H_64_32.png -r 48 36 lit.dae", "48x36"},
+      {"-t 2 -s 64 -a 16 0.05 -l 1 -m 5 -r 48 36 -f bunny.png lit.dae", "48x36"},
+      {"-t 2 -s 4 -l 4 -m 5 -b 0.23 -d 4.5 -f dof.png -r 48 36 lit.dae", "48x36"},
+      {"-t 2 -s 4 -l 4 -m 5 -o 0 -r 48 36 -f only_m.png lit.dae", "48x36"},
+      {"-t 1 -s 1 -r 16 12 lit.dae -f out.png", "16x12"},  // the line: -r, then the scene
+      {"lit.dae -r 16 12 -f after.png -s 1 -t 1", "16x12"},
+      {"-r 16 12 lit.dae -H -f after_h.png", "16x12"},
+      {"-p 2 3 4 5 lit.dae -r 16 12 -f cell.png", "16x12 (cell 2 3 4 5)"},
+  };
+  for (const Line& line : lines) {
+    Outcome run = pathtracer(line.args);
+    EXPECT_FALSE(run.crashed) << line.args;
+    ASSERT_EQ(run.exit_code, 0) << line.args << "\n" << run.err;
+    EXPECT_NE(run.out.find("render: " + line.size), std::string::npos) << line.args << "\n" << run.out;
+  }
+  // The flags mean the same wherever they stand: one seed, one image.
+  const std::string flags[][2] = {
+      {"-t 2 -s 8 -l 4 -m 3 -r 24 18 -f a.png lit.dae", "lit.dae -f b.png -m 3 -r 24 18 -l 4 -t 2 -s 8"},
+      {"-H -s 8 -r 24 18 -f a.png lit.dae", "-s 8 lit.dae -r 24 18 -H -f b.png"},
+      {"-a 4 0.1 -s 16 -r 24 18 -f a.png lit.dae", "-r 24 18 -s 16 lit.dae -a 4 0.1 -f b.png"},
+  };
+  for (const auto& pair : flags) {
+    ASSERT_EQ(pathtracer(pair[0]).exit_code, 0) << pair[0];
+    ASSERT_EQ(pathtracer(pair[1]).exit_code, 0) << pair[1];
+    EXPECT_TRUE(same_pixels(pt::read_image(file("a.png")), pt::read_image(file("b.png"))))
+        << pair[0] << " and " << pair[1] << " rendered different images";
+  }
+  // -o 0 keeps bounce -m alone: at -m 1 that is direct light, which -m 0 (emission only) lacks.
+  ASSERT_EQ(pathtracer("-o 0 -m 1 -s 2 -r 24 18 -f a.png lit.dae").exit_code, 0);
+  ASSERT_EQ(pathtracer("--bounce 1 -m 1 -s 2 -r 24 18 -f b.png lit.dae").exit_code, 0);
+  EXPECT_TRUE(same_pixels(pt::read_image(file("a.png")), pt::read_image(file("b.png"))));
+  EXPECT_GT(pt::read_image(file("a.png")).at(12, 9).x, 0.0f);
+  EXPECT_EQ(pathtracer("-o -1 -f c.png lit.dae").exit_code, 2);
+}
+
+TEST_F(CliTest, CameraSettingsFileIsTheCoursesSavedView) {
+  std::ofstream(file("lit.dae")) << lit_quad_scene();
+  // The course renderer's file for the scene's own camera: at the origin looking down -Z,
+  // 60 degrees across at the file's 2:1 (vFov = 2 atan(tan 30° / 2) = 32.204°).
+  auto settings = [](const std::string& c2w, const std::string& lens) {
+    return "60 32.2042 2 0.1 100\n0 0 0 0 0 -1\n0 0 1 0.1 100\n" + c2w + "\n800 400 1\n" + lens + "\n";
+  };
+  std::ofstream(file("same.txt")) << settings("1 0 0 0 1 0 0 0 1", "1 0");
+  std::ofstream(file("old.txt")) << settings("1 0 0 0 1 0 0 0 1", "");  // before the lens was saved
+  std::ofstream(file("behind.txt")) << settings("-1 0 0 0 1 0 0 0 -1", "1 0");  // turned round
+  ASSERT_EQ(pathtracer("--file-camera -s 2 -r 24 12 -f file.png lit.dae").exit_code, 0);
+  Outcome same = pathtracer("-c same.txt -s 2 -r 24 12 -f same.png lit.dae");
+  ASSERT_EQ(same.exit_code, 0) << same.err;
+  ASSERT_EQ(pathtracer("-s 2 -r 24 12 lit.dae -c old.txt -f old.png").exit_code, 0);
+  ASSERT_EQ(pathtracer("-s 2 -r 24 12 -c behind.txt -f behind.png lit.dae").exit_code, 0);
+  const pt::Image file_camera = pt::read_image(file("file.png"));
+  EXPECT_TRUE(same_pixels(file_camera, pt::read_image(file("same.png"))));
+  EXPECT_TRUE(same_pixels(file_camera, pt::read_image(file("old.png"))));
+  EXPECT_GT(file_camera.at(12, 6).x, 0.0f);
+  EXPECT_EQ(pt::read_image(file("behind.png")).at(12, 6), glm::vec3(0.0f));  // it sees nothing
+
+  std::ofstream(file("short.txt")) << "60 32 2 0.1 100\n0 0 0\n";
+  std::ofstream(file("word.txt")) << settings("1 0 0 0 one 0 0 0 1", "1 0");
+  const std::pair<std::string, std::string> bad[] = {
+      {"short.txt", "target.x"}, {"word.txt", "c2w[1][1]"}, {"absent.txt", "absent.txt"}};
+  for (const auto& [name, mention] : bad) {
+    Outcome run = pathtracer("-c " + name + " -f bad.png lit.dae");
+    EXPECT_EQ(run.exit_code, 1) << name << "\n" << run.err;
+    EXPECT_NE(run.err.find(mention), std::string::npos) << name << ": " << run.err;
+    EXPECT_NE(run.err.find(name), std::string::npos) << name << ": " << run.err;
+  }
+  EXPECT_FALSE(fs::exists(file("bad.png")));
 }

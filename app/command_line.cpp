@@ -130,13 +130,13 @@ int parse_command_line(int argc, char** argv, CommandLine* command, std::ostream
       ->capture_default_str();
   app.add_option("-r,--resolution", resolution,
                  "Image width and height (default: 480 wide, the scene camera's aspect)")
-      ->expected(2)->type_name("W H");
+      ->expected(2)->allow_extra_args(false)->type_name("W H");
   app.add_option("-f,--file", c.output_path, "Render to FILE (.png or .exr) and exit")->type_name("FILE");
   app.add_flag("-H,--hemisphere", s.hemisphere_sampling,
                "Direct light by uniform hemisphere sampling instead of light sampling");
   app.add_option("-a,--adaptive", adaptive,
                  "Adaptive sampling: check convergence every BATCH samples, stop at tolerance TOL")
-      ->expected(2)->type_name("BATCH TOL");
+      ->expected(2)->allow_extra_args(false)->type_name("BATCH TOL");
   std::string stopping_rule = stopping_rule_name(s.stopping_rule);
   app.add_option("--stopping-rule", stopping_rule,
                  "With -a: which samples decide when a pixel stops (split: one in four decides, the "
@@ -150,7 +150,17 @@ int parse_command_line(int argc, char** argv, CommandLine* command, std::ostream
   app.add_option("-d,--focal-distance", s.focal_distance,
                  "Distance of the plane in focus (default: the scene's)");
   app.add_option("-p,--cell", cell, "Render only the cell of DX x DY pixels at column X, row Y")
-      ->expected(4)->type_name("X Y DX DY");
+      ->expected(4)->allow_extra_args(false)->type_name("X Y DX DY");
+  CLI::Option* camera_settings =
+      app.add_option("-c,--camera-settings", c.camera_settings_path,
+                     "Render from the view saved in the course renderer's camera settings FILE "
+                     "(its field of view, placement and lens; -b and -d, when given, win)")
+          ->type_name("FILE");
+  int accumulate = 1;
+  app.add_option("-o,--accumulate-bounces", accumulate,
+                 "1 (or more): the light of every bounce up to -m, the default; 0: only the light "
+                 "of bounce -m itself (as --bounce M)")
+      ->type_name("INT");
   app.add_flag("--info", c.info, "Print what the scene holds and render nothing");
   std::string seed = std::to_string(s.seed);
   app.add_option("--seed", seed, "Random seed: the same seed gives the same image")
@@ -184,7 +194,15 @@ int parse_command_line(int argc, char** argv, CommandLine* command, std::ostream
                "Frame the scene as the course's renderer does at the same -r: 1.5 x the scene's "
                "diagonal from its centre, and the pixels of its 800 x 600 window (at -r 480 360 the "
                "field of view's tangent x 0.6), so images compare with the course's")
-      ->excludes(file_camera);
+      ->excludes(file_camera)->excludes(camera_settings);
+  std::string camera;
+  app.add_option("--camera", camera,
+                 "Place the camera: eye px,py,pz looking at tx,ty,tz with up ux,uy,uz and a "
+                 "horizontal field of view of fov degrees (the viewer's \"use this view\" writes it)")
+      ->type_name("px,py,pz,tx,ty,tz,ux,uy,uz,fov")
+      ->excludes(file_camera)
+      ->excludes("--course-view")
+      ->excludes(camera_settings);
 
   if (auto code = parse_or_exit(app, argc, argv, "pathtracer", "Run with --help for the options.",
                                 out, err))
@@ -223,8 +241,30 @@ int parse_command_line(int argc, char** argv, CommandLine* command, std::ostream
     if (integrator == "path") s.integrator = IntegratorChoice::path;
     if (no_rr) s.russian_roulette = false;
     s.seed = parse_seed(seed);
+    if (app.count("--camera")) {
+      try {
+        c.camera = parse_camera_view(camera);
+      } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+      }
+      c.camera_given = true;
+    }
     if (app.count("--bounce") && s.only_bounce < 0)
       throw UsageError("--bounce must be 0 or more (got " + std::to_string(s.only_bounce) + ")");
+    if (app.count("--accumulate-bounces")) {
+      if (accumulate < 0)
+        throw UsageError("-o/--accumulate-bounces must be 0 or more (got " + std::to_string(accumulate) + ")");
+      if (accumulate == 0) {
+        if (app.count("--bounce") && s.only_bounce != s.max_depth)
+          throw UsageError("-o 0 keeps bounce -m " + std::to_string(s.max_depth) +
+                           " only, --bounce " + std::to_string(s.only_bounce) + " another");
+        s.only_bounce = s.max_depth;
+      }
+    }
+    if (app.count("--camera-settings") && c.camera_settings_path.empty())
+      throw UsageError("-c/--camera-settings: the file name is empty");
+    c.lens_given = app.count("--aperture") > 0;
+    c.focal_distance_given = app.count("--focal-distance") > 0;
     if (app.count("--env") && s.environment_map.empty())
       throw UsageError("-e/--env: the environment map's file name is empty");
     check_settings(c, resolution, cell, adaptive, app.count("--focal-distance") > 0);

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "app/camera_view.h"
 #include "framework/render/render_settings.h"
 
 namespace pt {
@@ -22,6 +23,11 @@ struct CommandLine {
   bool info = false;             ///< --info: describe the scene, render nothing
   bool file_camera = false;      ///< --file-camera: do not centre the camera on the scene
   bool course_view = false;      ///< --course-view: frame the scene as the course's renderer does at -r
+  std::string camera_settings_path;  ///< -c: the course renderer's saved view; empty: the file's camera
+  bool lens_given = false;           ///< -b given (it wins over a -c file's lens)
+  bool focal_distance_given = false; ///< -d given (it wins over a -c file's focal distance)
+  bool camera_given = false;     ///< --camera: place the camera at `camera` instead of the file's
+  CameraView camera;
 };
 
 /// A command line that cannot be honoured; what() names the flag and what is wrong.

@@ -1,5 +1,4 @@
 #include "app/convergence.h"
-#include "app/cli_parse.h"
 
 #include <algorithm>
 #include <chrono>
@@ -457,66 +456,73 @@ std::vector<std::filesystem::path> write_convergence_outputs(const ConvergenceOp
   return {csv, js, svg};
 }
 
-int convergence_main(int argc, char** argv) {
-  ConvergenceOptions o;
-  CLI::App app{"bench --convergence: relMSE against render time for each sampling strategy "
-               "(hemisphere, light importance, MIS, adaptive on the best), against a cached "
-               "high-sample reference; writes convergence.csv, .json and .svg",
-               "bench"};
-  std::vector<int> resolution;
-  std::vector<double> adaptive;
-  std::string out_dir = o.out_dir.string();
-  app.add_option("--convergence", o.scene_path, "The scene (COLLADA .dae)")->required();
-  app.add_option("--out", out_dir, "Folder of the table, the plot and the cached reference")
+BenchCommand add_convergence_command(CLI::App& bench) {
+  struct State {
+    ConvergenceOptions o;
+    std::vector<int> resolution;
+    std::vector<double> adaptive;
+    std::string out_dir;
+  };
+  auto s = std::make_shared<State>();
+  s->out_dir = s->o.out_dir.string();
+  ConvergenceOptions& o = s->o;
+  CLI::App* app = bench.add_subcommand(
+      "convergence", "relMSE against render time for each sampling strategy (hemisphere, light "
+                     "importance, MIS, adaptive on the best), against a cached high-sample "
+                     "reference; writes convergence.csv, .json and .svg");
+  app->add_option("scene", o.scene_path, "The scene (COLLADA .dae)")->required();
+  app->add_option("--out", s->out_dir, "Folder of the table, the plot and the cached reference")
       ->capture_default_str();
-  app.add_option("--budgets", o.budgets, "Samples per pixel of each render, growing, comma-separated")
+  app->add_option("--budgets", o.budgets, "Samples per pixel of each render, growing, comma-separated")
       ->delimiter(',')->capture_default_str();
-  app.add_option("--reference-spp", o.reference_spp, "Samples per pixel of the reference")
+  app->add_option("--reference-spp", o.reference_spp, "Samples per pixel of the reference")
       ->capture_default_str();
-  app.add_option("--seed", o.seed, "Seed of the measured renders")->capture_default_str();
-  app.add_option("--reference-seed", o.reference_seed, "Seed of the reference (must differ)")
+  app->add_option("--seed", o.seed, "Seed of the measured renders")->capture_default_str();
+  app->add_option("--reference-seed", o.reference_seed, "Seed of the reference (must differ)")
       ->capture_default_str();
-  app.add_option("-r,--resolution", resolution,
-                 "Width and height (default: 200 wide, the camera's aspect)")
+  app->add_option("-r,--resolution", s->resolution,
+                  "Width and height (default: 200 wide, the camera's aspect)")
       ->expected(2)->type_name("W H");
-  app.add_option("-m,--max-depth", o.max_depth, "Maximum ray depth")->capture_default_str();
-  app.add_option("-l,--light-samples", o.light_samples, "Samples per area light")
+  app->add_option("-m,--max-depth", o.max_depth, "Maximum ray depth")->capture_default_str();
+  app->add_option("-l,--light-samples", o.light_samples, "Samples per area light")
       ->capture_default_str();
-  app.add_option("-t,--threads", o.threads, "Render threads; 0 uses every core")
+  app->add_option("-t,--threads", o.threads, "Render threads; 0 uses every core")
       ->capture_default_str();
-  app.add_option("-a,--adaptive", adaptive, "Adaptive strategy's BATCH and TOL (default 32 0.05)")
+  app->add_option("-a,--adaptive", s->adaptive, "Adaptive strategy's BATCH and TOL (default 32 0.05)")
       ->expected(2)->type_name("BATCH TOL");
-  app.add_option("--target", o.target,
-                 "relMSE at which to compare times (default: light importance's at the largest "
-                 "budget)");
-  app.add_option("--speedup-budget", o.speedup_budget,
-                 "Budget rendered on 1 thread too (0: the middle budget; -1: none)")
+  app->add_option("--target", o.target,
+                  "relMSE at which to compare times (default: light importance's at the largest "
+                  "budget)");
+  app->add_option("--speedup-budget", o.speedup_budget,
+                  "Budget rendered on 1 thread too (0: the middle budget; -1: none)")
       ->capture_default_str();
-  app.add_flag("--fresh-reference", o.fresh_reference,
-               "Render the reference again even when the cached one matches (after a code change)");
-  if (auto code = parse_or_exit(app, argc, argv, "bench", "Run bench --convergence SCENE --help for the options.", std::cout, std::cerr))
-    return *code;
-  o.out_dir = out_dir;
-  if (!resolution.empty()) o.width = resolution[0], o.height = resolution[1];
-  if (!adaptive.empty()) {
-    if (!(adaptive[0] >= 1.0 && adaptive[0] <= 1e6) || adaptive[0] != std::floor(adaptive[0])) {
-      std::cerr << "bench: -a: BATCH must be a whole number of at least 1\n";
-      return 2;
-    }
-    o.adaptive_batch = int(adaptive[0]);
-    o.adaptive_tolerance = float(adaptive[1]);
-  }
-  ConvergenceResult result;
-  try {
-    result = run_convergence(o, std::cerr);
-  } catch (const ConvergenceOptionError& e) {
-    std::cerr << "bench: " << e.what() << "\n";
-    return 2;
-  }
-  std::cout << convergence_report(result);
-  for (const auto& path : write_convergence_outputs(o, result))
-    std::cout << "wrote " << path.string() << "\n";
-  return 0;
+  app->add_flag("--fresh-reference", o.fresh_reference,
+                "Render the reference again even when the cached one matches (after a code change)");
+  return {app, [s]() -> int {
+            ConvergenceOptions& o = s->o;
+            o.out_dir = s->out_dir;
+            if (!s->resolution.empty()) o.width = s->resolution[0], o.height = s->resolution[1];
+            if (!s->adaptive.empty()) {
+              const double batch = s->adaptive[0];
+              if (!(batch >= 1.0 && batch <= 1e6) || batch != std::floor(batch)) {
+                std::cerr << "bench convergence: -a: BATCH must be a whole number of at least 1\n";
+                return 2;
+              }
+              o.adaptive_batch = int(batch);
+              o.adaptive_tolerance = float(s->adaptive[1]);
+            }
+            ConvergenceResult result;
+            try {
+              result = run_convergence(o, std::cerr);
+            } catch (const ConvergenceOptionError& e) {
+              std::cerr << "bench convergence: " << e.what() << "\n";
+              return 2;
+            }
+            std::cout << convergence_report(result);
+            for (const auto& path : write_convergence_outputs(o, result))
+              std::cout << "wrote " << path.string() << "\n";
+            return 0;
+          }};
 }
 
 }  // namespace pt

@@ -1,4 +1,4 @@
-// bench --convergence: error against time for each sampling strategy of a scene, measured
+// bench convergence: error against time for each sampling strategy of a scene, measured
 // against a cached high-sample reference, as a table (CSV, JSON) and a log-log plot (SVG).
 #pragma once
 
@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "app/bench_command.h"
 #include "app/reference_cache.h"
 #include "framework/render/render_settings.h"
 #include "framework/stats/allocation_bound.h"
@@ -110,8 +111,8 @@ std::vector<std::filesystem::path> write_convergence_outputs(const ConvergenceOp
 /// The table and the time-to-target summary as a person reads them.
 std::string convergence_report(const ConvergenceResult& result);
 
-/// `bench --convergence SCENE [options]`: parses argv, runs the study, prints the report and
-/// writes the outputs. Returns the exit code (2 for a bad command line).
-int convergence_main(int argc, char** argv);
+/// `bench convergence SCENE [options]`: the subcommand, which runs the study, prints the report
+/// and writes the outputs.
+BenchCommand add_convergence_command(CLI::App& bench);
 
 }  // namespace pt

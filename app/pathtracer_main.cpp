@@ -24,6 +24,7 @@
 #include "framework/render/sample_rate.h"
 #include "framework/render/tile_renderer.h"
 #include "framework/scene/camera_placement.h"
+#include "framework/scene/camera_settings_file.h"
 #include "framework/scene/collada_loader.h"
 #include "framework/scene/scene_error.h"
 #include "framework/scene/scene_summary.h"
@@ -78,10 +79,21 @@ int run(int argc, char** argv) {
     check_cell(settings);
     check_memory();
   }
+  if (!command.camera_settings_path.empty()) {
+    // The course renderer's saved view replaces the file's camera, lens included, unless -b or
+    // -d say otherwise.
+    scene.camera = read_camera_settings(command.camera_settings_path, scene.camera);
+    if (!command.lens_given) settings.lens_radius = scene.camera.lens_radius;
+    if (!command.focal_distance_given) settings.focal_distance = scene.camera.focal_distance;
+  }
   try {
-    if (command.course_view)
+    // A saved view (-c) stays where the course's renderer had it.
+    const bool saved_view = !command.camera_settings_path.empty();
+    if (command.camera_given)
+      apply_camera_view(command.camera, &scene.camera);
+    else if (command.course_view)
       place_course_camera(scene.bounds(), settings.width, settings.height, &scene.camera);
-    else if (!command.file_camera)
+    else if (!command.file_camera && !saved_view)
       centre_camera_on(scene.bounds(), &scene.camera);
   } catch (const std::range_error& e) {
     throw SceneError(command.scene_path, "", e.what());

@@ -1,5 +1,6 @@
 #include "app/radiance.h"
 
+#include <algorithm>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -11,12 +12,16 @@
 #ifdef PT_HAVE_WIDE_BVH
 #include "app/accel/wide_bvh.h"
 #endif
+#ifdef PT_HAVE_FAST_LIGHTS
+#include "app/fast/light_batches.h"
+#endif
 
 namespace pt {
 
 std::vector<MaterialKind> rendered_material_kinds(const RenderSettings& settings) {
   if (settings.shading == ShadingMode::normals) return {};
-  return {MaterialKind::diffuse, MaterialKind::mirror, MaterialKind::glass, MaterialKind::emission};
+  return {MaterialKind::diffuse, MaterialKind::mirror, MaterialKind::glass, MaterialKind::microfacet,
+          MaterialKind::emission};
 }
 
 namespace {
@@ -39,8 +44,17 @@ TracedRadianceFn counted_radiance(const RenderSettings& settings, const Scene& s
   std::string error;
   std::shared_ptr<Integrator> integrator = Integrator::create(settings, scene, query, &error);
   if (!integrator) throw std::runtime_error(error);
-  return [integrator, &query](const Ray& ray, Rng& rng, TraceContext& context) {
+  const int light_samples = std::max(1, settings.light_samples);
+  return [integrator, &query, light_samples](const Ray& ray, Rng& rng, TraceContext& context) {
     const LocalCountingRayQuery<Query> counting(query);
+#ifdef PT_HAVE_FAST_LIGHTS
+    // The camera sample's light samples and shadow rays in lanes and batches, foreseen from the
+    // generator its estimate draws from: the framework's definitions' answers, to the bit.
+    LightBatches batches(&rng, light_samples);
+    const FasterLightSampling::Installed installed(batches);
+#else
+    (void)light_samples;
+#endif
     const glm::vec3 L = integrator->radiance(ray, rng, counting);
     context.rays.add(counting.count());
     return L;

@@ -132,7 +132,7 @@ Reference load_or_make_reference(const std::string& scene_path, const RenderSett
     std::filesystem::create_directories(dir);
     write_estimate_exr(ref.exr.string(), ref.estimate);
     json m = {{"key", ref.key},
-              {"made_by", "bench --convergence"},
+              {"made_by", "bench convergence"},
               {"scene", scene_path},
               {"scene_fingerprint", hex(file_fingerprint(scene_path))},
               {"strategy", settings.mis ? "mis"

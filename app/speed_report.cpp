@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <regex>
 #include <sstream>
 #include <stdexcept>
@@ -51,7 +52,7 @@ ChildRun run_measured(const std::vector<std::string>& argv, const std::vector<st
   env.push_back(nullptr);
 
   int pipe_fds[2];
-  if (pipe(pipe_fds) != 0) throw std::runtime_error("bench --render: cannot make a pipe");
+  if (pipe(pipe_fds) != 0) throw std::runtime_error("bench render: cannot make a pipe");
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addclose(&actions, pipe_fds[0]);
@@ -66,7 +67,7 @@ ChildRun run_measured(const std::vector<std::string>& argv, const std::vector<st
   close(pipe_fds[1]);
   if (spawned != 0) {
     close(pipe_fds[0]);
-    throw std::runtime_error("bench --render: cannot run " + argv[0]);
+    throw std::runtime_error("bench render: cannot run " + argv[0]);
   }
   char buffer[4096];
   for (ssize_t n; (n = read(pipe_fds[0], buffer, sizeof buffer)) != 0;) {
@@ -166,21 +167,21 @@ std::vector<SpeedCase> speed_cases(bool quick) {
   return cases;
 }
 
-int speed_report_main(int argc, char** argv) {
-  CLI::App app{"bench --render: the speed report. Runs pathtracer on the course's scenes at the "
-               "flags of the performance goals, one run after another, and prints JSON: wall and "
-               "render seconds, rays/s, peak memory, and the cost of commands that write no image"};
-  bool render_flag = false, quick = false;
+namespace {
+
+/// What `bench render` was asked for.
+struct SpeedReportOptions {
+  bool quick = false;
   std::string scenes = "../shared/scenes/cs184", pathtracer, out_path;
   int repeat = 1;
-  app.add_flag("--render", render_flag, "the speed report (this mode)")->required();
-  app.add_flag("--quick", quick, "the same scenes and settings at 160x120 or an eighth of the samples");
-  app.add_option("--scenes", scenes, "the course's scenes (default ../shared/scenes/cs184)");
-  app.add_option("--pathtracer", pathtracer, "the pathtracer to run (default: beside bench)");
-  app.add_option("--repeat", repeat, "runs of each case; the median is reported with every run")
-      ->check(CLI::Range(1, 100));
-  app.add_option("--out", out_path, "also write the JSON to this file");
-  CLI11_PARSE(app, argc, argv);
+};
+
+int speed_report(SpeedReportOptions o) {
+  const bool quick = o.quick;
+  const std::string& scenes = o.scenes;
+  const std::string& out_path = o.out_path;
+  const int repeat = o.repeat;
+  std::string& pathtracer = o.pathtracer;
 
   if (pathtracer.empty()) pathtracer = (own_folder() / "pathtracer").string();
   if (!fs::exists(pathtracer)) throw std::runtime_error(pathtracer + ": no pathtracer there (--pathtracer)");
@@ -192,7 +193,7 @@ int speed_report_main(int argc, char** argv) {
 
   const fs::path tmp = fs::temp_directory_path() / ("pt_speed_report_" + std::to_string(getpid()));
   fs::create_directories(tmp);
-  json report = {{"report", quick ? "bench --render --quick" : "bench --render"},
+  json report = {{"report", quick ? "bench render --quick" : "bench render"},
                  {"date", utc_now()},
                  {"machine", {{"cpu", cpu_model()},
                               {"cores", std::thread::hardware_concurrency()},
@@ -209,7 +210,7 @@ int speed_report_main(int argc, char** argv) {
     json entry = {{"name", c.name}, {"command", command_text(argv)}};
     std::vector<double> walls, renders, mrays, rss;
     json runs = json::array();
-    std::cerr << "bench --render: " << c.name << "\n";
+    std::cerr << "bench render: " << c.name << "\n";
     for (int r = 0; r < repeat; ++r) {
       const ChildRun run = run_measured(argv, {});
       json one = {{"exit_code", run.exit_code}, {"wall_s", run.wall_seconds},
@@ -275,10 +276,27 @@ int speed_report_main(int argc, char** argv) {
     if (!(out << text << "\n")) throw std::runtime_error(out_path + ": cannot write the report");
   }
   if (failures > 0) {
-    std::cerr << "bench --render: " << failures << " run(s) failed; their output is in the JSON\n";
+    std::cerr << "bench render: " << failures << " run(s) failed; their output is in the JSON\n";
     return 1;
   }
   return 0;
+}
+
+}  // namespace
+
+BenchCommand add_speed_report_command(CLI::App& bench) {
+  auto o = std::make_shared<SpeedReportOptions>();
+  CLI::App* app = bench.add_subcommand(
+      "render", "the speed report: runs pathtracer on the course's scenes at the flags of the "
+                "performance goals, one run after another, and prints JSON: wall and render "
+                "seconds, rays/s, peak memory, and the cost of commands that write no image");
+  app->add_flag("--quick", o->quick, "the same scenes and settings at 160x120 or an eighth of the samples");
+  app->add_option("--scenes", o->scenes, "the course's scenes (default ../shared/scenes/cs184)");
+  app->add_option("--pathtracer", o->pathtracer, "the pathtracer to run (default: beside bench)");
+  app->add_option("--repeat", o->repeat, "runs of each case; the median is reported with every run")
+      ->check(CLI::Range(1, 100));
+  app->add_option("--out", o->out_path, "also write the JSON to this file");
+  return {app, [o] { return speed_report(*o); }};
 }
 
 }  // namespace pt

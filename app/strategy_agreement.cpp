@@ -1,5 +1,4 @@
 #include "app/strategy_agreement.h"
-#include "app/cli_parse.h"
 
 #include <chrono>
 #include <cstdio>
@@ -148,65 +147,71 @@ json to_json(const AgreementResult& result) {
   return j;
 }
 
-int agreement_main(int argc, char** argv) {
-  CLI::App app{"bench --agreement: light sampling, MIS and hemisphere sampling of each scene, "
-               "compared pairwise by the block t-test; JSON on stdout, exit 1 when a pair differs",
-               "bench"};
-  std::vector<std::string> scenes;
-  std::vector<int> resolution;
-  AgreementOptions o;
-  app.add_option("--agreement", scenes, "The scenes (COLLADA .dae)")->required()->expected(1, -1);
-  app.add_option("-r,--resolution", resolution, "Width and height")->expected(2)->type_name("W H");
-  app.add_option("-s,--samples", o.samples, "Samples per pixel of light sampling and MIS")
+BenchCommand add_agreement_command(CLI::App& bench) {
+  struct State {
+    std::vector<std::string> scenes;
+    std::vector<int> resolution;
+    AgreementOptions o;
+  };
+  auto s = std::make_shared<State>();
+  AgreementOptions& o = s->o;
+  CLI::App* app = bench.add_subcommand(
+      "agreement", "light sampling, MIS and hemisphere sampling of each scene, compared pairwise "
+                   "by the block t-test; JSON on stdout, exit 1 when a pair differs");
+  app->add_option("scenes", s->scenes, "The scenes (COLLADA .dae)")->required()->expected(1, -1);
+  app->add_option("-r,--resolution", s->resolution, "Width and height")->expected(2)->type_name("W H");
+  app->add_option("-s,--samples", o.samples, "Samples per pixel of light sampling and MIS")
       ->capture_default_str()->check(CLI::PositiveNumber);
-  app.add_option("--hemisphere-samples", o.hemisphere_samples,
-                 "Samples per pixel of hemisphere sampling (default: 4 x -s)")
+  app->add_option("--hemisphere-samples", o.hemisphere_samples,
+                  "Samples per pixel of hemisphere sampling (default: 4 x -s)")
       ->check(CLI::NonNegativeNumber);
-  app.add_option("-m,--max-depth", o.max_depth, "Maximum ray depth")->capture_default_str()
+  app->add_option("-m,--max-depth", o.max_depth, "Maximum ray depth")->capture_default_str()
       ->check(CLI::NonNegativeNumber);
-  app.add_option("-l,--light-samples", o.light_samples, "Samples per area light")
+  app->add_option("-l,--light-samples", o.light_samples, "Samples per area light")
       ->capture_default_str()->check(CLI::PositiveNumber);
-  app.add_option("--seed", o.seed, "Seed of the first strategy (the others take the next ones)")
+  app->add_option("--seed", o.seed, "Seed of the first strategy (the others take the next ones)")
       ->capture_default_str();
-  app.add_option("-t,--threads", o.threads, "Render threads; 0 uses every core")->capture_default_str();
-  app.add_option("--block-size", o.block_size, "Block size of the t-test")->capture_default_str()
+  app->add_option("-t,--threads", o.threads, "Render threads; 0 uses every core")->capture_default_str();
+  app->add_option("--block-size", o.block_size, "Block size of the t-test")->capture_default_str()
       ->check(CLI::PositiveNumber);
-  app.add_option("--alpha", o.alpha, "Family-wise significance of each comparison")
+  app->add_option("--alpha", o.alpha, "Family-wise significance of each comparison")
       ->capture_default_str()->check(CLI::Range(1e-12, 0.5));
-  if (auto code = parse_or_exit(app, argc, argv, "bench", "Run bench --agreement SCENE --help for the options.", std::cout, std::cerr))
-    return *code;
-  if (!resolution.empty()) {
-    if (resolution[0] < 1 || resolution[1] < 1 || resolution[0] > 16384 || resolution[1] > 16384) {
-      std::cerr << "bench: -r: width and height must be between 1 and 16384\n";
-      return 2;
-    }
-    o.width = resolution[0], o.height = resolution[1];
-  }
-  json out = json::array();
-  bool all_agree = true;
-  for (const std::string& path : scenes) {
-    Scene scene;
-    try {
-      scene = load_collada(path);
-    } catch (const SceneError& e) {
-      std::cerr << "bench: " << e.what() << "\n";
-      return 1;
-    }
-    centre_camera_on(scene.bounds(), &scene.camera);  // as pathtracer places it
-    std::cerr << "agreement: " << path << " ...\n";
-    const AgreementResult r = compare_strategies(scene, o);
-    std::cerr << "agreement: " << path << ": " << r.summary() << "\n";
-    json j = to_json(r);
-    j["scene"] = path;
-    j["settings"] = {{"width", o.width},        {"height", o.height},
-                     {"max_depth", o.max_depth}, {"light_samples", o.light_samples},
-                     {"seed", o.seed},           {"block_size", o.block_size},
-                     {"alpha", o.alpha}};
-    out.push_back(j);
-    all_agree = all_agree && r.agree();
-  }
-  std::cout << out.dump(2) << "\n";
-  return all_agree ? 0 : 1;
+  return {app, [s]() -> int {
+            AgreementOptions& o = s->o;
+            if (!s->resolution.empty()) {
+              const int w = s->resolution[0], h = s->resolution[1];
+              if (w < 1 || h < 1 || w > 16384 || h > 16384) {
+                std::cerr << "bench agreement: -r: width and height must be between 1 and 16384\n";
+                return 2;
+              }
+              o.width = w, o.height = h;
+            }
+            json out = json::array();
+            bool all_agree = true;
+            for (const std::string& path : s->scenes) {
+              Scene scene;
+              try {
+                scene = load_collada(path);
+              } catch (const SceneError& e) {
+                std::cerr << "bench agreement: " << e.what() << "\n";
+                return 1;
+              }
+              centre_camera_on(scene.bounds(), &scene.camera);  // as pathtracer places it
+              std::cerr << "agreement: " << path << " ...\n";
+              const AgreementResult r = compare_strategies(scene, o);
+              std::cerr << "agreement: " << path << ": " << r.summary() << "\n";
+              json j = to_json(r);
+              j["scene"] = path;
+              j["settings"] = {{"width", o.width},        {"height", o.height},
+                               {"max_depth", o.max_depth}, {"light_samples", o.light_samples},
+                               {"seed", o.seed},           {"block_size", o.block_size},
+                               {"alpha", o.alpha}};
+              out.push_back(j);
+              all_agree = all_agree && r.agree();
+            }
+            std::cout << out.dump(2) << "\n";
+            return all_agree ? 0 : 1;
+          }};
 }
 
 }  // namespace pt

@@ -1,5 +1,5 @@
 // Do light sampling, MIS and hemisphere sampling render a scene as one image? The check that every
-// strategy sees and samples the same emitters (bench --agreement, and the test beside it).
+// strategy sees and samples the same emitters (bench agreement, and the test beside it).
 #pragma once
 
 #include <string>
@@ -8,6 +8,7 @@
 #include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
 
+#include "app/bench_command.h"
 #include "framework/image/render_estimate.h"
 #include "framework/scene/scene.h"
 #include "framework/stats/block_ttest.h"
@@ -65,7 +66,8 @@ AgreementResult compare_strategies(const Scene& scene, const AgreementOptions& o
 
 nlohmann::json to_json(const AgreementResult& result);
 
-/// bench --agreement SCENE...: the check at full resolution, as JSON; exit 1 when a pair differs.
-int agreement_main(int argc, char** argv);
+/// `bench agreement SCENE...`: the subcommand, the check at full resolution, as JSON; exit 1
+/// when a pair differs.
+BenchCommand add_agreement_command(CLI::App& bench);
 
 }  // namespace pt

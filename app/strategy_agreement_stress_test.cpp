@@ -2,7 +2,7 @@
 // every project scene: small renders at high sample counts, compared pairwise by the block
 // t-test. A strategy that sees one emitter where another samples a different one (a mirror that
 // shows a panel brighter than its light, a BSDF sample that reaches a panel of another shape)
-// fails here. The full-resolution check is `bench --agreement SCENE...`.
+// fails here. The full-resolution check is `bench agreement SCENE...`.
 #include "app/strategy_agreement.h"
 
 #include <gtest/gtest.h>

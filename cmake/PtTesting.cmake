@@ -99,6 +99,8 @@ endfunction()
 # is an error. OUT names a variable that receives the targets made. TARGET_PREFIX (default the
 # label) starts each executable's name, TEST_PREFIX (default the label) each step test's name;
 # NO_STRESS leaves the stress files out (the grader's isolated builds, cmake/PtIsolated.cmake).
+# With PT_PROJECT_CHECKS off (a handout), only a part's step tests are made, without its stress
+# files: the tests a student's grade runs.
 function(pt_add_tests_in)
   cmake_parse_arguments(A "STEPS;NO_STRESS" "DIR;LABEL;OUT;TARGET_PREFIX;TEST_PREFIX" "LIBS;EXCLUDE" ${ARGN})
   if(NOT A_TARGET_PREFIX)
@@ -111,7 +113,10 @@ function(pt_add_tests_in)
   foreach(regex ${A_EXCLUDE})
     list(FILTER tests EXCLUDE REGEX "${regex}")
   endforeach()
-  if(A_NO_STRESS)
+  if(NOT PT_PROJECT_CHECKS AND NOT A_STEPS)
+    set(tests "")
+  endif()
+  if(A_NO_STRESS OR NOT PT_PROJECT_CHECKS)
     list(FILTER tests EXCLUDE REGEX "_stress_test\\.cpp$")
   endif()
   set(made "")

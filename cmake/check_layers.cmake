@@ -12,7 +12,8 @@
 #   app/                     every layer above (framework, parts, pipeline)
 #   grader/ website/ scenes/ the framework only (they run the pathtracer as a process), and
 #                            grader/process/ (the keeper and its limits: the tools' own layer,
-#                            which includes the framework only and no numbered layer includes)
+#                            which includes the framework only and no numbered layer includes,
+#                            but a test that runs a program)
 #   grader/judge/            the probes and judges of the parts' tests: every numbered layer
 #                            (framework, parts, pipeline), as app/ does; nothing includes it
 #   fuzz/                    the framework only (the loader under a fuzzer)
@@ -72,6 +73,8 @@ foreach(top framework parts pipeline app grader website scenes fuzz)
         if(NOT (to STREQUAL "0" OR to STREQUAL from OR (to STREQUAL "process" AND NOT from STREQUAL "fuzz")))
           list(APPEND violations "${rel}: #include \"${target}\": ${from}/ may include only the framework, grader/process and itself")
         endif()
+      elseif(to STREQUAL "process" AND rel MATCHES "_test\\.cpp$")
+        # A test of any layer may run a program under the keeper (it links pt_process itself).
       elseif(to MATCHES "^(grader|website|scenes|fuzz|process)$")
         list(APPEND violations "${rel}: #include \"${target}\": the layers never include a tool (${to}/)")
       elseif(to GREATER from)

@@ -9,8 +9,8 @@
 namespace pt::fuzz {
 
 /// 2^16 primitives and node instances. With the full limits (2^24) a mutated doubling chain just
-/// under them is a valid scene of millions of triangles, which took the sanitized target past its
-/// 10 s an input (the first timeout it reported: reproducers/doubling_chain_under_the_limit.dae);
+/// under them is a valid scene of millions of triangles, which takes the sanitized target past its
+/// time limit for an input (reproducers/doubling_chain_under_the_limit.dae);
 /// lowered, such a chain is refused at once and the limit's error path is reached often. The full
 /// limits are tested by framework/scene/hostile_scene_test.cpp.
 inline constexpr LoadLimits kFuzzLimits{uint64_t(1) << 16, uint64_t(1) << 16};

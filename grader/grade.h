@@ -129,8 +129,8 @@ constexpr double kMaxLoadFactor = 8.0;
 /// A check's wall-time limit on a machine shared with other work: `seconds` (what it is given on
 /// an idle machine) times the machine's load per core over the last minute, between 1 and
 /// kMaxLoadFactor. Correct code on a busy machine is then not failed for time the machine did not
-/// give it (a render at load 9 on 2 cores took over the 60 s it was given), and an endless loop
-/// still ends.
+/// give it (a render's wall time grows with the load on its cores), and an endless loop still
+/// ends.
 double load_scaled_limit(double seconds, double load_average, int cores);
 
 /// The same at this machine's load average now (`seconds` itself when it cannot be read).

@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir="${BUILD_DIR:-build}"
-jobs="${JOBS:-$(nproc)}"
+jobs="${JOBS:-$(getconf _NPROCESSORS_ONLN)}"  # the cores (a Mac has no nproc)
 generator=()
 if command -v ninja >/dev/null 2>&1 && [ ! -f "$build_dir/Makefile" ]; then generator=(-G Ninja); fi
 launcher=()

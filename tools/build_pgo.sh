@@ -51,10 +51,10 @@ BUILD_DIR="$build_dir" tools/build.sh -DPT_PGO=generate "-DPT_PGO_DIR=$profile" 
   --target pathtracer bench >&2
 echo "build_pgo: training" >&2
 render_all instrumented
-"$build_dir/app/bench" scenes/cornell_coil.dae --wide --rounds 1 --min-seconds 0 --threads 1 \
-  >/dev/null
-"$build_dir/app/bench" scenes/cornell_spheres.dae --wide --rounds 1 --min-seconds 0 --threads 1 \
-  >/dev/null
+"$build_dir/app/bench" rays scenes/cornell_coil.dae --wide --rounds 1 --min-seconds 0 \
+  --threads 1 >/dev/null
+"$build_dir/app/bench" rays scenes/cornell_spheres.dae --wide --rounds 1 --min-seconds 0 \
+  --threads 1 >/dev/null
 echo "build_pgo: the optimised build" >&2
 # Not from the compiler cache: an object compiled from an earlier training's profile would be the
 # same code, only laid out for other counts, and the speed measured would not be this profile's.

@@ -17,9 +17,15 @@ packages=(
   nlohmann-json3-dev    # bench output, manifests, grader results
   libxxhash-dev         # fingerprints of the convergence study's cached references
   libcmark-dev          # write-up Markdown
-  libembree-dev         # optional: bench --embree comparison only
+  libcpp-httplib-dev    # the viewer's web server (127.0.0.1 only)
+  libembree-dev         # optional: bench rays --embree comparison only
   clang libclang-rt-dev llvm  # optional: tools/fuzz (libFuzzer, its sanitizers, llvm-cov)
-  chromium              # headless browser test of the write-up
+  chromium              # headless browser tests of the write-up and the viewer
+  # The other machines CI builds for (tools/ports/): Clang with libc++ (macOS's standard library)
+  # and GoogleTest's sources to build with it; the arm64 cross compiler and qemu-user to run its
+  # programs (the arm64 libraries are unpacked into the build tree, not installed).
+  libc++-dev libc++abi-dev googletest
+  g++-aarch64-linux-gnu qemu-user-static
 )
 
 SUDO=""

@@ -8,7 +8,7 @@
 
 #include "framework/math/float_error.h"
 #include "framework/math/ray.h"
-#include "framework/math/sse.h"
+#include "app/fast/sse.h"
 
 // Eight lanes at once where the build targets AVX (PT_ISA in the top CMakeLists): the same
 // operations on twice the lanes, so every answer is the four-lane one.

@@ -13,7 +13,7 @@
 #include "framework/geometry/surface_hit.h"
 #include "framework/math/float_error.h"
 #include "framework/math/ray.h"
-#include "framework/math/sse.h"
+#include "app/fast/sse.h"
 
 namespace pt {
 

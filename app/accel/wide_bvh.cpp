@@ -18,6 +18,7 @@
 #include <glm/geometric.hpp>
 
 #include "app/accel/sheared_triangle.h"
+#include "app/accel/surface_hit_lanes.h"
 #include "parts/1-raygen/sphere_intersect.h"
 #include "pipeline/1-raygen/scene_intersect.h"
 
@@ -691,8 +692,8 @@ bool WideBvh::intersect(const Ray& ray, SurfaceHit* hit) const {
     const Corners c = corners(best.packet, best.lane);
     const uint32_t vertex[3] = {packet.vertex[0][best.lane], packet.vertex[1][best.lane],
                                 packet.vertex[2][best.lane]};
-    if (triangle_surface_hit(scene_, best.prim, TriangleHit{best.t, best.b0, best.b1, best.b2},
-                             c.p0, c.p1, c.p2, vertex, hit))
+    if (triangle_surface_hit_in_lanes(scene_, best.prim, TriangleHit{best.t, best.b0, best.b1, best.b2},
+                                      c.p0, c.p1, c.p2, vertex, hit))
       return true;
   } else if (intersect_primitive(scene_, best.prim, ray, hit) && hit->t == best.t) {
     return true;

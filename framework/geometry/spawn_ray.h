@@ -11,6 +11,10 @@ namespace pt {
 
 /// A ray leaving `hit` in direction `w`, started just outside the hit point's error box on w's
 /// side of the surface, so it cannot hit the surface it leaves. Its interval is (0, +inf).
+///
+/// The origin is offset_ray_origin(p, p_error, ng, w) (float_error.h): p moved along ng by
+/// d = |ng|·p_error (the error box's extent along the normal), to w's side, each coordinate then
+/// rounded one float further away from p.
 Ray spawn_ray(const SurfaceHit& hit, const glm::vec3& w);
 
 /// The ray from `hit` to the point `p` (error bound `p_error`) that lies in direction `w` from
@@ -18,17 +22,11 @@ Ray spawn_ray(const SurfaceHit& hit, const glm::vec3& w);
 /// outside the hit's error box and ends just short of p's (pushed back towards the hit), so it
 /// meets neither the surface it leaves nor the one it aims at. An empty interval when nothing
 /// lies between the two.
+///
+/// With o = spawn_ray(hit, w).o and the target q = offset_ray_origin(p, p_error, n, -w) (p itself
+/// when n is zero): the direction is (q - o) / |q - o| and tmax = |q - o|·(1 - γ4), short of q by
+/// more than the rounding of |q - o| (float_error.h's γn bounds n roundings).
 Ray spawn_ray_to(const SurfaceHit& hit, const glm::vec3& w, const glm::vec3& p,
                  const glm::vec3& p_error, const glm::vec3& n);
-
-/// spawn_ray written one glm operation at a time: its definition, as spawn_ray_to_portable is
-/// spawn_ray_to's.
-Ray spawn_ray_portable(const SurfaceHit& hit, const glm::vec3& w);
-
-/// spawn_ray_to written one glm operation at a time: its definition. spawn_ray_to does the same
-/// operations in SIMD lanes where the build has them (every shadow ray comes through it) and
-/// must give these bits; the tests hold it to that.
-Ray spawn_ray_to_portable(const SurfaceHit& hit, const glm::vec3& w, const glm::vec3& p,
-                          const glm::vec3& p_error, const glm::vec3& n);
 
 }  // namespace pt

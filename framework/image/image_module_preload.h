@@ -1,7 +1,7 @@
-// Opening the image module while a render runs: the image library's shared objects take a
-// hundred million instructions of symbol binding to load (most of them are linked to bind every
-// call at load, whatever dlopen asks), and a render that would open it only to write its film
-// waits for all of them after its last ray. Opened beside the render, the wait is gone.
+// Opening the image module while a render runs: the image library's shared objects are many and
+// slow to load (most of them are linked to bind every call at load, whatever dlopen asks), and a
+// render that would open it only to write its film waits for all of them after its last ray.
+// Opened beside the render, the wait is gone.
 #pragma once
 
 #include <string>

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstddef>
 #include <cstdio>
 #include <map>
 #include <string>
@@ -12,11 +11,7 @@
 
 #include "framework/math/float_error.h"
 #include "framework/math/frame.h"
-#include "framework/math/vec3_lanes.h"
 #include "framework/sampling/warp.h"
-#if PT_SSE2 && defined(__AVX__)
-#include <immintrin.h>
-#endif
 
 namespace pt {
 namespace {
@@ -164,75 +159,19 @@ std::string panel_disagreement(const Scene& scene, const SampledLight& l,
          "hemisphere sampling all see and sample the same light";
 }
 
-#if PT_SSE2 && defined(__AVX__)
-// Writes a sample made in lanes as three stores: [wi L pdf distance], [p p_error n.x n.y] and
-// [n.z delta]. The caller reads it back at once, and its loads (glm's, the student's, merged by
-// the compiler as it likes: wi.z with L.x, say) are forwarded from a store only when one store
-// holds all their bytes; a field at a time, a load across two fields waited for both stores to
-// reach the cache, about 6% of a light-sampled render in the profile-guided build.
-void store_sample(LightSample* ls, lanes::V3 wi, lanes::V3 L, float pdf, float distance,
-                  lanes::V3 p, lanes::V3 p_error, lanes::V3 n) {
-  static_assert(offsetof(LightSample, wi) == 0 && offsetof(LightSample, L) == 12 &&
-                    offsetof(LightSample, pdf) == 24 && offsetof(LightSample, distance) == 28 &&
-                    offsetof(LightSample, p) == 32 && offsetof(LightSample, p_error) == 44 &&
-                    offsetof(LightSample, n) == 56 && offsetof(LightSample, delta) == 68 &&
-                    offsetof(LightSample, shadow_ray_made) == 69 &&
-                    offsetof(LightSample, ahead_ng_z) == 72,
-                "the three stores below are laid out for LightSample's fields (and leave its "
-                "shadow ray unmade)");
-  const __m128 pdf_distance = _mm_unpacklo_ps(_mm_set_ss(pdf), _mm_set_ss(distance));
-  const __m128 first = _mm_insert_ps(wi, L, 0x30);                         // wi, L.x
-  const __m128 second = _mm_shuffle_ps(L, pdf_distance, _MM_SHUFFLE(1, 0, 2, 1));  // L.y L.z pdf distance
-  const __m128 third = _mm_insert_ps(p, p_error, 0x30);                    // p, p_error.x
-  const __m128 fourth = _mm_shuffle_ps(p_error, n, _MM_SHUFFLE(1, 0, 2, 1));  // p_error.y .z, n.x n.y
-  const __m128 last = _mm_unpackhi_ps(n, _mm_setzero_ps());  // n.z; delta, shadow_ray_made false
-  float* out = reinterpret_cast<float*>(ls);
-  _mm256_storeu_ps(out, _mm256_set_m128(second, first));
-  _mm256_storeu_ps(out + 8, _mm256_set_m128(fourth, third));
-  _mm_storel_pi(reinterpret_cast<__m64*>(out + 16), last);
-}
-#endif
-
 // The end of every panel and mesh sample: the point q = wa + wb + wc on the light (the sum in
 // that order), its error bound γ6·(|wa| + |wb| + |wc|) (plus `slack`, when not null), and the
 // light's normal n there. Fills ls and returns whether the point can send light towards p.
 // Inlined into both of its callers: a call would add to every light sample's chain.
 [[gnu::always_inline]] inline bool finish_surface_sample(const SampledLight& l, const glm::vec3& p,
-                                                         const glm::vec3& wa_, const glm::vec3& wb_,
-                                                         const glm::vec3& wc_, const glm::vec3& n,
+                                                         const glm::vec3& wa, const glm::vec3& wb,
+                                                         const glm::vec3& wc, const glm::vec3& n,
                                                          bool one_sided, const glm::vec3* slack,
                                                          LightSample* ls) {
   // Uniform on the light's whole surface: 1 / area, whichever triangle the point is on; nothing
-  // from the back of a one-sided panel.
-#if PT_SSE2
-  // glm's operations below, three lanes at a time (framework/math/vec3_lanes.h): the same bits.
-  using namespace lanes;
-  const V3 wa = load(wa_), wb = load(wb_), wc = load(wc_);
-  const V3 q = add(add(wa, wb), wc);
-  const V3 d = sub(q, load(p));
-  const float dist = std::sqrt(lanes::dot(d, d));
-  if (!(dist > 0.0f) || !std::isfinite(dist)) return false;
-  const V3 wi = div(d, splat(dist));
-  V3 p_error = mul(splat(gamma(6)), add(add(glm_abs(wa), glm_abs(wb)), glm_abs(wc)));
-  if (slack) p_error = add(p_error, load(*slack));
-  const V3 nv = load(n);
-  const float cos_l = lanes::dot(neg(wi), nv);
-  if (one_sided && !(cos_l > 0.0f)) return false;
-  const float pdf = area_to_solid_angle_pdf(l.inv_area, dist, cos_l);
-  const V3 L = pdf > 0.0f ? load(l.radiance) : _mm_setzero_ps();
-#ifdef __AVX__
-  store_sample(ls, wi, L, pdf, dist, q, p_error, nv);
-#else
-  ls->wi = to_vec3(wi);
-  ls->L = to_vec3(L);
-  ls->pdf = pdf;
-  ls->distance = dist;
-  ls->p = to_vec3(q);
-  ls->p_error = to_vec3(p_error);
-  ls->n = n;
-#endif
-#else
-  const glm::vec3 q = wa_ + wb_ + wc_;
+  // from the back of a one-sided panel. The point's error: each term of the sum is within γ6 of
+  // its size (the corners' products and the sum's two roundings), plus the quad's slack.
+  const glm::vec3 q = wa + wb + wc;
   const glm::vec3 d = q - p;
   const float dist = glm::length(d);
   if (!(dist > 0.0f) || !std::isfinite(dist)) return false;
@@ -242,17 +181,109 @@ void store_sample(LightSample* ls, lanes::V3 wi, lanes::V3 L, float pdf, float d
   ls->wi = wi;
   ls->distance = dist;
   ls->p = q;
-  ls->p_error = gamma(6) * (glm::abs(wa_) + glm::abs(wb_) + glm::abs(wc_));
+  ls->p_error = gamma(6) * (glm::abs(wa) + glm::abs(wb) + glm::abs(wc));
   if (slack) ls->p_error += *slack;
   ls->n = n;
   ls->pdf = area_to_solid_angle_pdf(l.inv_area, dist, cos_l);
   ls->L = ls->pdf > 0.0f ? l.radiance : glm::vec3(0.0f);
-#endif
   return true;
 }
 
+// Triangle (a, b, c) as the directions from p to its points: a spherical triangle of corners
+// A, B, C (unit vectors), of angle alpha at A, and of solid angle omega = alpha + beta + gamma − π.
+// usable when it subtends at least kMinSolidAngle (below that the sum of angles loses the
+// difference to rounding, and area sampling's 1/d² is harmless anyway) and is not edge-on.
+struct SphericalTriangle {
+  glm::dvec3 A{0.0}, B{0.0}, C{0.0};
+  double alpha = 0.0, omega = 0.0;
+  bool usable = false;
+};
+constexpr double kMinSolidAngle = 1e-3;
+
+SphericalTriangle spherical_triangle(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b,
+                                     const glm::vec3& c) {
+  SphericalTriangle s;
+  const glm::dvec3 da = glm::dvec3(a) - glm::dvec3(p), db = glm::dvec3(b) - glm::dvec3(p),
+                   dc = glm::dvec3(c) - glm::dvec3(p);
+  const double la = glm::length(da), lb = glm::length(db), lc = glm::length(dc);
+  if (!(la > 0.0 && lb > 0.0 && lc > 0.0)) return s;
+  s.A = da / la, s.B = db / lb, s.C = dc / lc;
+  // The angle at a corner is the one between the great circles through it: between the normals
+  // of the planes each pair of corners spans with the centre.
+  const glm::dvec3 n_ab = glm::cross(s.A, s.B), n_bc = glm::cross(s.B, s.C), n_ca = glm::cross(s.C, s.A);
+  const double l_ab = glm::length(n_ab), l_bc = glm::length(n_bc), l_ca = glm::length(n_ca);
+  if (!(l_ab > 1e-12 && l_bc > 1e-12 && l_ca > 1e-12)) return s;
+  auto angle = [](const glm::dvec3& u, double lu, const glm::dvec3& v, double lv) {
+    return std::acos(std::clamp(glm::dot(u, v) / (lu * lv), -1.0, 1.0));
+  };
+  s.alpha = angle(n_ab, l_ab, -n_ca, l_ca);
+  const double beta = angle(n_bc, l_bc, -n_ab, l_ab);
+  const double gamma_ = angle(n_ca, l_ca, -n_bc, l_bc);
+  s.omega = s.alpha + beta + gamma_ - M_PI;
+  s.usable = s.omega >= kMinSolidAngle && std::isfinite(s.omega) &&
+             std::abs(glm::dot(s.A, n_bc)) > 1e-9;  // not seen edge-on
+  return s;
+}
+
+// A direction uniform in solid angle over spherical triangle s (Arvo 1995): the sub-triangle
+// A B C' of area u.x·omega fixes C' on the arc AC, then the direction lies on the arc B C' at
+// the cosine 1 − u.y (1 − C'·B) from B.
+glm::dvec3 sample_spherical_triangle(const SphericalTriangle& s, glm::vec2 u) {
+  const double area = double(u.x) * s.omega;
+  const double sn = std::sin(area - s.alpha), cs = std::cos(area - s.alpha);
+  const double ca = std::cos(s.alpha), sa = std::sin(s.alpha);
+  const double uu = cs - ca;
+  const double vv = sn + sa * glm::dot(s.A, s.B);
+  const double q = std::clamp(((vv * cs - uu * sn) * ca - vv) / ((vv * sn + uu * cs) * sa), -1.0, 1.0);
+  const glm::dvec3 along_ac = s.C - glm::dot(s.C, s.A) * s.A;
+  const glm::dvec3 c1 = q * s.A + std::sqrt(std::max(0.0, 1.0 - q * q)) * glm::normalize(along_ac);
+  const double z = 1.0 - double(u.y) * (1.0 - glm::dot(c1, s.B));
+  const glm::dvec3 along = c1 - glm::dot(c1, s.B) * s.B;
+  const double len = glm::length(along);
+  if (!(len > 0.0)) return s.B;
+  return z * s.B + std::sqrt(std::max(0.0, 1.0 - z * z)) * (along / len);
+}
+
+// Where a mesh light's triangle is seen from p under a usable solid angle, its point is drawn
+// uniformly in that solid angle, not by area: a point just above a two-sided light (CBempty's
+// ceiling, a centimetre above its panel) saw area sampling's 1/d² weights, unbiased but so
+// heavy-tailed that a thousand samples a pixel left whole blocks darker than MIS. The point is
+// where the direction meets the triangle's plane, written as barycentric terms as area sampling
+// writes it (so its error bound is the same); the density is the pick's over omega.
+bool sample_triangle_by_solid_angle(const SampledLight& l, const SampledLight::SampledTriangle& t,
+                                    const SphericalTriangle& s, float pick, const glm::vec3& p,
+                                    glm::vec2 u, LightSample* ls) {
+  const glm::dvec3 w = sample_spherical_triangle(s, u);
+  const glm::dvec3 a(t.a), b(t.b), c(t.c), o(p);
+  const glm::dvec3 e1 = b - a, e2 = c - a, n = glm::cross(e1, e2);
+  const double denom = glm::dot(w, n);
+  if (!(std::abs(denom) > 0.0)) return false;
+  const glm::dvec3 q = o + (glm::dot(a - o, n) / denom) * w;
+  const glm::dvec3 v = q - a;
+  const double d00 = glm::dot(e1, e1), d01 = glm::dot(e1, e2), d11 = glm::dot(e2, e2);
+  const double d20 = glm::dot(v, e1), d21 = glm::dot(v, e2), den = d00 * d11 - d01 * d01;
+  if (!(den > 0.0)) return false;
+  double wb = std::max(0.0, (d11 * d20 - d01 * d21) / den), wc = std::max(0.0, (d00 * d21 - d01 * d20) / den);
+  double wa = std::max(0.0, 1.0 - wb - wc);
+  const double sum = wa + wb + wc;
+  wa /= sum, wb /= sum, wc /= sum;
+  if (!finish_surface_sample(l, p, float(wa) * t.a, float(wb) * t.b, float(wc) * t.c, t.n, false,
+                             nullptr, ls))
+    return false;
+  if (ls->pdf > 0.0f) ls->pdf = float(double(pick) / s.omega);
+  return true;
+}
+
+// The probability of picking triangle (a, b, c) of light l: its area over the light's, the area
+// computed as the set computed it.
+float triangle_pick_probability(const SampledLight& l, const glm::vec3& a, const glm::vec3& b,
+                                const glm::vec3& c) {
+  return 0.5f * glm::length(glm::cross(b - a, c - a)) * l.inv_area;
+}
+
 // A point on one of light l's triangles, picked with probability area / l.area and uniformly on
-// it; one-sided (a panel) or not. Fills ls and returns whether the point can send light towards
+// it (by solid angle where a mesh light's triangle is seen under a usable one, above); one-sided
+// (a panel) or not. Fills ls and returns whether the point can send light towards
 // p. Every light sample of a mesh light, and of a panel that is not a quad, comes here: its
 // triangle's corners and normal are read from the light's own table, and 1 / area is the light's.
 bool sample_triangles(const SampledLight& l, const glm::vec3& p, glm::vec2 u, bool one_sided,
@@ -262,6 +293,12 @@ bool sample_triangles(const SampledLight& l, const glm::vec3& p, glm::vec2 u, bo
   const float u0 = std::clamp(x * float(l.triangle_pick.size()) - float(cell), 0.0f, 1.0f);
   const SampledLight::SampledTriangle& t = l.sampled_triangles[cell];
   if (t.n == glm::vec3(0.0f)) return false;
+  if (l.kind == SampledLightKind::mesh) {
+    const SphericalTriangle s = spherical_triangle(p, t.a, t.b, t.c);
+    if (s.usable)
+      return sample_triangle_by_solid_angle(l, t, s, triangle_pick_probability(l, t.a, t.b, t.c), p,
+                                            {u0, u.y}, ls);
+  }
   const glm::vec3 bary = square_to_uniform_triangle({u0, u.y});
   return finish_surface_sample(l, p, bary.x * t.a, bary.y * t.b, bary.z * t.c, t.n, one_sided,
                                nullptr, ls);
@@ -276,189 +313,13 @@ bool sample_quad(const SampledLight& l, const glm::vec3& p, glm::vec2 u, LightSa
                                l.sampled_triangles[0].n, true, &l.quad_slack, ls);
 }
 
-// A panel's or mesh's sample from p into *ls (LightSample{} where its point cannot light p): what
-// sample() makes of those two kinds, and sample_batch() where it has no lanes.
+// A panel's or mesh's sample from p into *ls (LightSample{} where its point cannot light p).
 [[gnu::always_inline]] inline void sample_surface(const SampledLight& l, const glm::vec3& p, glm::vec2 u,
                                                   LightSample* ls) {
   const bool one_sided = l.kind == SampledLightKind::panel;
   const bool found = l.quad ? sample_quad(l, p, u, ls) : sample_triangles(l, p, u, one_sided, ls);
   if (!found) *ls = LightSample{};
 }
-
-#if PT_SSE2 && defined(__AVX__)
-// Rows r[0..8) of an 8 × 8 block of floats become its columns: r[k] then holds lane k's eight
-// values in order (the fields of one sample).
-[[gnu::always_inline]] inline void transpose8(__m256 r[8]) {
-  const __m256 t0 = _mm256_unpacklo_ps(r[0], r[1]), t1 = _mm256_unpackhi_ps(r[0], r[1]);
-  const __m256 t2 = _mm256_unpacklo_ps(r[2], r[3]), t3 = _mm256_unpackhi_ps(r[2], r[3]);
-  const __m256 t4 = _mm256_unpacklo_ps(r[4], r[5]), t5 = _mm256_unpackhi_ps(r[4], r[5]);
-  const __m256 t6 = _mm256_unpacklo_ps(r[6], r[7]), t7 = _mm256_unpackhi_ps(r[6], r[7]);
-  const __m256 s0 = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(1, 0, 1, 0));
-  const __m256 s1 = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(3, 2, 3, 2));
-  const __m256 s2 = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(1, 0, 1, 0));
-  const __m256 s3 = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(3, 2, 3, 2));
-  const __m256 s4 = _mm256_shuffle_ps(t4, t6, _MM_SHUFFLE(1, 0, 1, 0));
-  const __m256 s5 = _mm256_shuffle_ps(t4, t6, _MM_SHUFFLE(3, 2, 3, 2));
-  const __m256 s6 = _mm256_shuffle_ps(t5, t7, _MM_SHUFFLE(1, 0, 1, 0));
-  const __m256 s7 = _mm256_shuffle_ps(t5, t7, _MM_SHUFFLE(3, 2, 3, 2));
-  r[0] = _mm256_permute2f128_ps(s0, s4, 0x20);
-  r[1] = _mm256_permute2f128_ps(s1, s5, 0x20);
-  r[2] = _mm256_permute2f128_ps(s2, s6, 0x20);
-  r[3] = _mm256_permute2f128_ps(s3, s7, 0x20);
-  r[4] = _mm256_permute2f128_ps(s0, s4, 0x31);
-  r[5] = _mm256_permute2f128_ps(s1, s5, 0x31);
-  r[6] = _mm256_permute2f128_ps(s2, s6, 0x31);
-  r[7] = _mm256_permute2f128_ps(s3, s7, 0x31);
-}
-
-// sample_quad for eight numbers u[0..8) at once, one sample a lane: every operation of
-// finish_surface_sample, in its order, on eight lanes instead of three, so each lane's bits are
-// the ones sample_quad makes (light_set_test checks it). A lane with no sample (p on the light,
-// the back of the panel) gets LightSample{}. Written as LightSet::sample writes one (stores of
-// 32, 32 and 8 bytes, see store_sample), after transposing the fields to samples.
-void sample_quad8(const SampledLight& l, const glm::vec3& p, const glm::vec2 u[8], LightSample out[8],
-                  const SurfaceHit* from) {
-  static_assert(offsetof(LightSample, delta) == 68 && offsetof(LightSample, shadow_ray_made) == 69 &&
-                    offsetof(LightSample, ahead_ng_z) == 72 && offsetof(LightSample, ahead_ray) == 96 &&
-                    offsetof(LightSample, ahead_made) == 128 && offsetof(LightSample, ahead_from) == 192 &&
-                    sizeof(LightSample) == 224,
-                "the rows below are LightSample's fields in order");
-  auto splat = [](float x) { return _mm256_set1_ps(x); };
-  const __m256 ux = _mm256_setr_ps(u[0].x, u[1].x, u[2].x, u[3].x, u[4].x, u[5].x, u[6].x, u[7].x);
-  const __m256 uy = _mm256_setr_ps(u[0].y, u[1].y, u[2].y, u[3].y, u[4].y, u[5].y, u[6].y, u[7].y);
-  const __m256 sign = splat(-0.0f);
-  const glm::vec3& n = l.sampled_triangles[0].n;
-  __m256 q[3], d[3], wa_abs[3];
-  for (int k = 0; k < 3; ++k) {
-    const __m256 wa = splat(l.corner[k]);
-    const __m256 wb = _mm256_mul_ps(ux, splat(l.edge_u[k]));
-    const __m256 wc = _mm256_mul_ps(uy, splat(l.edge_v[k]));
-    q[k] = _mm256_add_ps(_mm256_add_ps(wa, wb), wc);
-    d[k] = _mm256_sub_ps(q[k], splat(p[k]));
-    wa_abs[k] = _mm256_add_ps(_mm256_add_ps(_mm256_andnot_ps(sign, wa), _mm256_andnot_ps(sign, wb)),
-                              _mm256_andnot_ps(sign, wc));
-  }
-  const __m256 dd = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(d[0], d[0]), _mm256_mul_ps(d[1], d[1])),
-                                  _mm256_mul_ps(d[2], d[2]));
-  const __m256 dist = _mm256_sqrt_ps(dd);
-  __m256 found = _mm256_and_ps(_mm256_cmp_ps(dist, _mm256_setzero_ps(), _CMP_GT_OQ),
-                               _mm256_cmp_ps(dist, splat(std::numeric_limits<float>::infinity()),
-                                             _CMP_NEQ_UQ));
-  __m256 wi[3], cos_l = _mm256_setzero_ps();
-  for (int k = 0; k < 3; ++k) {
-    wi[k] = _mm256_div_ps(d[k], dist);
-    const __m256 term = _mm256_mul_ps(_mm256_xor_ps(wi[k], sign), splat(n[k]));
-    cos_l = k == 0 ? term : _mm256_add_ps(cos_l, term);
-  }
-  found = _mm256_and_ps(found, _mm256_cmp_ps(cos_l, _mm256_setzero_ps(), _CMP_GT_OQ));
-  // area_to_solid_angle_pdf: 1/area · dist · dist / |cos|, zero where |cos| is not positive.
-  const __m256 c = _mm256_andnot_ps(sign, cos_l);
-  const __m256 pdf = _mm256_and_ps(
-      _mm256_cmp_ps(c, _mm256_setzero_ps(), _CMP_GT_OQ),
-      _mm256_div_ps(_mm256_mul_ps(_mm256_mul_ps(splat(l.inv_area), dist), dist), c));
-  const __m256 lit = _mm256_and_ps(found, _mm256_cmp_ps(pdf, _mm256_setzero_ps(), _CMP_GT_OQ));
-  // The rows: LightSample's 18 floats (the last, delta and padding, zero), each masked to its
-  // lane's `found` (LightSample{} elsewhere: zeros, and an infinite distance).
-  __m256 first[8] = {wi[0], wi[1], wi[2],
-                     _mm256_and_ps(lit, splat(l.radiance.x)), _mm256_and_ps(lit, splat(l.radiance.y)),
-                     _mm256_and_ps(lit, splat(l.radiance.z)), pdf, dist};
-  for (int k = 0; k < 7; ++k) first[k] = _mm256_and_ps(found, first[k]);
-  first[7] = _mm256_blendv_ps(splat(std::numeric_limits<float>::infinity()), dist, found);
-  __m256 second[8];
-  for (int k = 0; k < 3; ++k) {
-    second[k] = _mm256_and_ps(found, q[k]);
-    second[3 + k] = _mm256_and_ps(
-        found, _mm256_add_ps(_mm256_mul_ps(splat(gamma(6)), wa_abs[k]), splat(l.quad_slack[k])));
-  }
-  second[6] = _mm256_and_ps(found, splat(n.x));
-  second[7] = _mm256_and_ps(found, splat(n.y));
-  const __m256 nz = _mm256_and_ps(found, splat(n.z));
-#ifdef __AVX2__
-  if (from) {
-    // Each found sample's shadow ray, as spawn_shadow_ray makes it (spawn_ray_to, spawn_ray.cpp):
-    // its operations in their order, so each lane's bits are the ray's. The origin is the
-    // point's own offset, turned to the side each direction leaves by: one point a side.
-    using namespace lanes;
-    const V3 hng = load(from->ng), hp = load(from->p);
-    const V3 offset = mul(_mm_set1_ps(lanes::dot(glm_abs(hng), load(from->p_error))), hng);
-    alignas(16) float up[4], down[4];
-    _mm_store_ps(up, round_away(add(hp, offset), offset));
-    _mm_store_ps(down, round_away(add(hp, neg(offset)), neg(offset)));
-    auto dot8 = [](const __m256* a, const __m256* b) {
-      return _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(a[0], b[0]), _mm256_mul_ps(a[1], b[1])),
-                           _mm256_mul_ps(a[2], b[2]));
-    };
-    const __m256 zero = _mm256_setzero_ps();
-    const __m256 w[3] = {first[0], first[1], first[2]};
-    const __m256 ng8[3] = {splat(from->ng.x), splat(from->ng.y), splat(from->ng.z)};
-    const __m256 below = _mm256_cmp_ps(dot8(w, ng8), zero, _CMP_LT_OQ);
-    // The target: the light's point offset off it towards the shading point (-wi), or the point
-    // itself where the light has no normal.
-    const __m256 ln[3] = {second[6], second[7], nz};
-    const __m256 abs_ln[3] = {glm_abs(ln[0]), glm_abs(ln[1]), glm_abs(ln[2])};
-    const __m256 spread = dot8(abs_ln, second + 3);
-    const __m256 minus_w[3] = {_mm256_xor_ps(w[0], sign), _mm256_xor_ps(w[1], sign),
-                               _mm256_xor_ps(w[2], sign)};
-    const __m256 flip = _mm256_and_ps(_mm256_cmp_ps(dot8(minus_w, ln), zero, _CMP_LT_OQ), sign);
-    const __m256 no_normal = _mm256_and_ps(
-        _mm256_and_ps(_mm256_cmp_ps(ln[0], zero, _CMP_EQ_OQ), _mm256_cmp_ps(ln[1], zero, _CMP_EQ_OQ)),
-        _mm256_cmp_ps(ln[2], zero, _CMP_EQ_OQ));
-    __m256 o[3], d[3];
-    for (int k = 0; k < 3; ++k) {
-      o[k] = _mm256_blendv_ps(splat(up[k]), splat(down[k]), below);
-      const __m256 off = _mm256_xor_ps(_mm256_mul_ps(spread, ln[k]), flip);
-      const __m256 target = _mm256_blendv_ps(round_away(_mm256_add_ps(second[k], off), off), second[k],
-                                             no_normal);
-      d[k] = _mm256_sub_ps(target, o[k]);
-    }
-    const __m256 len = _mm256_sqrt_ps(dot8(d, d));
-    const __m256 aimed = _mm256_cmp_ps(len, zero, _CMP_GT_OQ);  // else an empty ray along wi
-    __m256 ray[8], third[8];
-    for (int k = 0; k < 3; ++k) {
-      ray[k] = o[k];
-      ray[3 + k] = _mm256_blendv_ps(w[k], _mm256_div_ps(d[k], len), aimed);
-    }
-    ray[6] = zero;
-    ray[7] = _mm256_and_ps(aimed, _mm256_mul_ps(len, splat(1.0f - gamma(4))));
-    // Floats 16-23: n.z, delta (false) and shadow_ray_made (found) in one float's bytes, the
-    // point's ng.z, n.z again (as made), four unused.
-    const __m256 made_flag = _mm256_and_ps(found, _mm256_castsi256_ps(_mm256_set1_epi32(0x100)));
-    third[0] = nz, third[1] = made_flag, third[2] = splat(from->ng.z), third[3] = nz;
-    for (int k = 4; k < 8; ++k) third[k] = zero;
-    // The point's p, p_error, ng.x and ng.y: eight floats in a row, the same for every sample.
-    const __m256 point = _mm256_loadu_ps(
-        reinterpret_cast<const float*>(reinterpret_cast<const char*>(from) + offsetof(SurfaceHit, p)));
-    transpose8(first);
-    transpose8(second);
-    transpose8(third);
-    transpose8(ray);
-    for (int j = 0; j < 8; ++j) {
-      float* to = reinterpret_cast<float*>(&out[j]);
-      _mm256_storeu_ps(to, first[j]);
-      _mm256_storeu_ps(to + 8, second[j]);
-      _mm256_storeu_ps(to + 16, third[j]);
-      _mm256_storeu_ps(to + 24, ray[j]);
-      _mm256_storeu_ps(to + 32, first[j]);
-      _mm256_storeu_ps(to + 40, second[j]);
-      _mm256_storeu_ps(to + 48, point);
-    }
-    return;
-  }
-#else
-  (void)from;
-#endif
-  transpose8(first);
-  transpose8(second);
-  alignas(32) float last[8];
-  _mm256_store_ps(last, nz);
-  for (int j = 0; j < 8; ++j) {
-    float* to = reinterpret_cast<float*>(&out[j]);
-    _mm256_storeu_ps(to, first[j]);
-    _mm256_storeu_ps(to + 8, second[j]);
-    _mm_storel_pi(reinterpret_cast<__m64*>(to + 16), _mm_set_ss(last[j]));
-  }
-}
-#endif
 
 // Whether panel l's triangles are two that tile a parallelogram (sharing an edge, their far
 // corners x and y with x + y = the shared edge's ends, to rounding): if so, sets l's corner, edges
@@ -620,33 +481,15 @@ glm::vec3 LightSet::environment_radiance(const glm::vec3& dir) const {
   return L;
 }
 
-LightSample LightSet::sample(int index, const SurfaceHit& hit, glm::vec2 u) const {
+LightSample LightSet::make_sample(int index, const SurfaceHit& hit, glm::vec2 u) const {
   const SampledLight& l = lights_[index];
-  // One named sample, returned on every path, so it is built in the caller's place (the
-  // course's lights, panels and meshes, fill it there; copying a sample out was a tenth of
-  // this function's instructions).
+  // One named sample, returned on every path, so it is built in the caller's place.
   LightSample ls;
-  if (samples_in_batches(index))
+  if (l.kind == SampledLightKind::panel || l.kind == SampledLightKind::mesh)
     sample_surface(l, hit.p, u, &ls);
   else
     ls = sample_other(l, hit, u);
   return ls;
-}
-
-void LightSet::sample_batch(int index, const glm::vec3& p, const glm::vec2* u, int n,
-                            LightSample* out, const SurfaceHit* shadow_from) const {
-  const SampledLight& l = lights_[index];
-#if PT_SSE2 && defined(__AVX__)
-  if (l.quad) {
-    // Eight lanes whatever n is: the spare ones repeat u[0], into out's spare room.
-    if (n == kBatchMost) return sample_quad8(l, p, u, out, shadow_from);
-    glm::vec2 u8[kBatchMost];
-    for (int j = 0; j < kBatchMost; ++j) u8[j] = u[j < n ? j : 0];
-    return sample_quad8(l, p, u8, out, shadow_from);
-  }
-#endif
-  (void)shadow_from;
-  for (int j = 0; j < n; ++j) sample_surface(l, p, u[j], &out[j]);
 }
 
 LightSample LightSet::sample_other(const SampledLight& l, const SurfaceHit& hit,
@@ -701,7 +544,7 @@ LightSample LightSet::sample_other(const SampledLight& l, const SurfaceHit& hit,
     }
     case SampledLightKind::panel:
     case SampledLightKind::mesh:
-      return {};  // sample() samples these
+      return {};  // make_sample() samples these
     case SampledLightKind::sphere: {
       const Sphere& s = scene_.spheres[l.sphere];
       glm::vec3 dc = s.center - p;
@@ -771,6 +614,11 @@ float LightSet::pdf(int index, const SurfaceHit& hit, const glm::vec3& wi,
     }
     case SampledLightKind::mesh: {
       if (!on_light || light_of_primitive(on_light->primitive) != index) return 0.0f;
+      const Triangle& tri = scene_.triangles[on_light->primitive];
+      const glm::vec3 &a = scene_.positions[tri.v[0]], &b = scene_.positions[tri.v[1]],
+                      &c = scene_.positions[tri.v[2]];
+      const SphericalTriangle s = spherical_triangle(hit.p, a, b, c);
+      if (s.usable) return float(double(triangle_pick_probability(l, a, b, c)) / s.omega);
       return area_to_solid_angle_pdf(1.0f / l.area, glm::length(on_light->p - hit.p),
                                      glm::dot(wi, on_light->ng));
     }

@@ -22,8 +22,8 @@
 //   scene is it, so no ray can hit it (as in the course, the camera does not see it), and
 //   hemisphere sampling cannot see it either, as it cannot see a point light.
 // - Every other emissive triangle becomes a light: one mesh light per emissive material, its
-//   triangles picked in proportion to their area, emitting its material's emission on both sides
-//   (as the course's emissive meshes do). Every emissive sphere becomes a sphere light.
+//   triangles picked by area, each sampled by the solid angle it subtends where usable (else by
+//   area), emitting on both sides (as the course's meshes do). Every emissive sphere: a sphere light.
 // - Ambient lights add up to one uniform environment; -e adds an image-based one. Both are
 //   sampled as lights; a ray that misses everything sees their sum.
 // - Lights that cannot emit (zero area, zero radiance, degenerate triangles) are left out, so
@@ -33,16 +33,10 @@
 #pragma once
 
 #include <cmath>
-#include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <limits>
-#include <memory>
 #include <string>
 #include <vector>
-#if defined(__AVX2__)
-#include <immintrin.h>
-#endif
 
 #include <glm/vec2.hpp>
 #include <glm/geometric.hpp>
@@ -52,6 +46,7 @@
 #include "framework/geometry/spawn_ray.h"
 #include "framework/geometry/surface_hit.h"
 #include "framework/lights/environment_map.h"
+#include "framework/lights/faster_light_sampling.h"
 #include "framework/math/ray.h"
 #include "framework/sampling/distribution.h"
 #include "framework/scene/scene.h"
@@ -76,19 +71,6 @@ struct LightSample {
   glm::vec3 p_error{0.0f};  ///< its floating-point error bound
   glm::vec3 n{0.0f};        ///< the light's surface normal there (zero for point lights)
   bool delta = false;
-
-  // The framework's, not an estimate's (neither read nor write them): the shadow ray towards
-  // this sample, made beside it where the sampler makes samples in lanes, so spawn_shadow_ray
-  // hands it out instead of making it (one chain of a square root and a division the walk would
-  // wait on). It is handed out only while the fields above that it was made from, and the point
-  // asking, are to the bit what it was made for; otherwise spawn_shadow_ray makes the ray anew.
-  // Left unwritten unless shadow_ray_made; laid out in the 32-byte pieces it is written and
-  // copied by (floats 16-23, 24-31, 32-47, 48-55), so each check reads one whole store.
-  bool shadow_ray_made = false;
-  float ahead_ng_z, ahead_n_z, ahead_unused[4];  ///< the point's ng.z; n.z as made
-  float ahead_ray[8];    ///< the ray: o, d, tmin, tmax
-  float ahead_made[16];  ///< floats 0-15 of the sample as made (wi to n.y)
-  float ahead_from[8];   ///< the point's p, p_error, ng.x, ng.y
 };
 
 /// A light ready to be sampled: its kind and the geometry it samples from.
@@ -144,24 +126,15 @@ class LightSet {
   /// Radiance of a ray that escapes the scene in direction `dir` (zero with no environment).
   glm::vec3 environment_radiance(const glm::vec3& dir) const;
 
-  /// A sample of light `index` as seen from the surface point `hit`.
-  LightSample sample(int index, const SurfaceHit& hit, glm::vec2 u) const;
-
-  /// Whether a sample of light `index` depends on nothing of the surface point but its position
-  /// (panels and meshes, sampled on their triangles), so that sample_batch() can make several of
-  /// them at once.
-  bool samples_in_batches(int index) const {
-    return lights_[index].kind == SampledLightKind::panel || lights_[index].kind == SampledLightKind::mesh;
+  /// A sample of light `index` as seen from the surface point `hit`, for the numbers u in
+  /// [0,1)²: make_sample's answer (see faster_light_sampling.h for who else may give it).
+  LightSample sample(int index, const SurfaceHit& hit, glm::vec2 u) const {
+    if (FasterLightSampling* faster = FasterLightSampling::on_this_thread())
+      return faster->sample(*this, index, hit, u);
+    return make_sample(index, hit, u);
   }
-  /// The most samples sample_batch makes at once: eight lanes of an AVX register.
-  static constexpr int kBatchMost = 8;
-  /// sample(index, a hit at p, u[j]) for each j < n (n ≤ kBatchMost) into out[j], for a light that
-  /// samples_in_batches: the same samples, bit for bit, made side by side. `out` has room for
-  /// kBatchMost samples; those past n may be overwritten (a batch is eight lanes whatever n is).
-  /// With `shadow_from` (a hit at p), each sample made in lanes also carries the shadow ray
-  /// spawn_shadow_ray(*shadow_from, out[j]) makes, made in lanes too (the same bits).
-  void sample_batch(int index, const glm::vec3& p, const glm::vec2* u, int n, LightSample* out,
-                    const SurfaceHit* shadow_from = nullptr) const;
+  /// The definition of a light sample, kind by kind (light_set.cpp).
+  LightSample make_sample(int index, const SurfaceHit& hit, glm::vec2 u) const;
 
   /// Density (per steradian) with which sample() would pick direction `wi` from `hit` for light
   /// `index`, where the ray hit `on_light` (null for an escaping ray). Zero for delta lights.
@@ -196,39 +169,18 @@ class LightSet {
   glm::vec3 ambient_{0.0f};
 };
 
-/// Whether ls's ahead_ray was made from ls's fields and `hit` as they are now, to the bit.
-inline bool shadow_ray_made_for(const SurfaceHit& hit, const LightSample& ls) {
-  static_assert(sizeof(ls.ahead_made) == offsetof(LightSample, n) + 2 * sizeof(float) &&
-                    sizeof(ls.ahead_from) == offsetof(SurfaceHit, ng) + 2 * sizeof(float) -
-                                                 offsetof(SurfaceHit, p),
-                "ahead_made copies the sample's bytes up to n.y, ahead_from the point's p to ng.y");
-  const char* s = reinterpret_cast<const char*>(&ls);
-  const char* made = reinterpret_cast<const char*>(ls.ahead_made);
-  const char* h = reinterpret_cast<const char*>(&hit) + offsetof(SurfaceHit, p);
-  const char* from = reinterpret_cast<const char*>(ls.ahead_from);
-#if defined(__AVX2__)
-  auto at = [](const char* b) { return _mm256_loadu_si256(reinterpret_cast<const __m256i*>(b)); };
-  const __m256i differ = _mm256_or_si256(
-      _mm256_or_si256(_mm256_xor_si256(at(s), at(made)), _mm256_xor_si256(at(s + 32), at(made + 32))),
-      _mm256_xor_si256(at(h), at(from)));
-  if (!_mm256_testz_si256(differ, differ)) return false;
-#else
-  if (std::memcmp(s, made, sizeof(ls.ahead_made)) != 0 || std::memcmp(h, from, sizeof(ls.ahead_from)) != 0)
-    return false;
-#endif
-  return std::memcmp(&ls.n.z, &ls.ahead_n_z, 4) == 0 && std::memcmp(&hit.ng.z, &ls.ahead_ng_z, 4) == 0;
-}
-
-/// The shadow ray from `hit` towards light sample `ls` (spawn_ray_to its point, or a ray in its
-/// direction for a distant light): it neither hits the surface it leaves nor the light it aims at.
-inline Ray spawn_shadow_ray(const SurfaceHit& hit, const LightSample& ls) {
-  if (ls.shadow_ray_made && shadow_ray_made_for(hit, ls)) {
-    Ray r;
-    std::memcpy(&r, ls.ahead_ray, sizeof r);
-    return r;
-  }
+/// The shadow ray from `hit` towards light sample `ls`: spawn_ray_to its point, or a ray in its
+/// direction for a distant light. It neither hits the surface it leaves nor the light it aims at.
+inline Ray make_shadow_ray(const SurfaceHit& hit, const LightSample& ls) {
   return std::isfinite(ls.distance) ? spawn_ray_to(hit, ls.wi, ls.p, ls.p_error, ls.n)
                                     : spawn_ray(hit, ls.wi);
+}
+
+/// The shadow ray an estimate traces for `ls`: make_shadow_ray's answer.
+inline Ray spawn_shadow_ray(const SurfaceHit& hit, const LightSample& ls) {
+  if (FasterLightSampling* faster = FasterLightSampling::on_this_thread())
+    return faster->shadow_ray(hit, ls);
+  return make_shadow_ray(hit, ls);
 }
 
 }  // namespace pt

@@ -49,8 +49,8 @@ RenderReport render_tiles(const RenderSettings& settings, const PixelFn& pixel, 
 /// Starts oneTBB, as render_tiles will use it, before anything else loads shared objects. The
 /// first parallel loop of a process opens oneTBB's allocator and thread-manager libraries, and a
 /// library opened while another thread opens its own waits for it (the dynamic loader has one
-/// lock): a render started beside the image module's preload (262 shared objects, 0.3 s) sat
-/// idle until the preload was done. Call this first, and the render starts at once.
+/// lock): a render started beside the image module's preload (a few hundred shared objects)
+/// sat idle until the preload was done. Call this first, and the render starts at once.
 void start_render_threads(const RenderSettings& settings);
 
 /// "render: 480x360, 16 spp, 2.31 s, 12.3 M rays/s" (plus the cell, the thread count, and a

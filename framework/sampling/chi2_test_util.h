@@ -3,7 +3,7 @@
 // The method of Nori, pbrt and Mitsuba: bin many sampled directions on a grid over the sphere,
 // integrate the claimed density over each cell numerically, pool cells whose expected count is
 // small, and ask Pearson's statistic how likely the observed histogram is under that density.
-// Only tests include this header (it pulls in Boost.Math for the chi-square distribution).
+// Tests and the viewer's sampling panel include this header.
 #pragma once
 
 #include <algorithm>
@@ -13,13 +13,13 @@
 #include <string>
 #include <vector>
 
-#include <boost/math/distributions/chi_squared.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "framework/math/frame.h"
 #include "framework/sampling/rng.h"
+#include "framework/stats/distributions.h"
 
 namespace pt {
 
@@ -31,6 +31,9 @@ struct Chi2Result {
   double pdf_integral = 0.0;  ///< the claimed density integrated over the sphere (should be 1)
   long nonfinite = 0;         ///< samples or densities that were NaN or infinite
   std::string summary;
+  /// Samples per cell and the count the density expects there, cell ic * phi_bins + ip (cosθ
+  /// row ic, φ column ip), then the cell of samples that drew nothing: what a plot draws.
+  std::vector<double> observed, expected;
 };
 
 /// Sampler: from a uniform point of the square, a unit direction, or false when it draws
@@ -97,6 +100,8 @@ inline Chi2Result chi2_direction_test(const DirectionSampler& sample, const Dire
     }
   expected[cells] = std::max(0.0, 1.0 - r.pdf_integral);
   for (double& e : expected) e *= double(opt.samples);
+  r.observed = observed;
+  r.expected = expected;
 
   // Pool small cells, smallest first (Nori's rule).
   std::vector<int> order(cells + 1);
@@ -127,8 +132,7 @@ inline Chi2Result chi2_direction_test(const DirectionSampler& sample, const Dire
   }
   r.statistic = stat;
   r.dof = std::max(1, used - 1);
-  boost::math::chi_squared dist(r.dof);
-  r.p_value = boost::math::cdf(boost::math::complement(dist, stat));
+  r.p_value = chi_squared_upper_tail(r.dof, stat);
   std::ostringstream os;
   os << "chi2 = " << stat << " with " << r.dof << " dof, p = " << r.p_value
      << ", integral of pdf = " << r.pdf_integral << ", non-finite = " << r.nonfinite;

@@ -8,8 +8,6 @@
 
 #include <glm/vec2.hpp>
 
-#include "framework/math/sse.h"
-
 namespace pt {
 
 /// A piecewise-constant density on [0,1) with n equal cells whose weights are `func`.
@@ -49,14 +47,7 @@ class Distribution1D {
       // the last cell: the clamp below makes both the last cell.
       const float* cdf = cdf_.data();
       int not_below = 0;
-#if PT_SSE2
-      static constexpr int8_t kBits[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
-      const __m128 uu = _mm_set1_ps(u);
-      for (size_t k = 0; k < cdf_.size(); k += 4)
-        not_below += kBits[_mm_movemask_ps(_mm_cmpnlt_ps(uu, _mm_loadu_ps(cdf + k)))];
-#else
       for (size_t k = 0; k < cdf_.size(); ++k) not_below += !(u < cdf[k]);
-#endif
       i = not_below - 1;
     } else {
       i = int(std::upper_bound(cdf_.begin(), cdf_.begin() + size() + 1, u) - cdf_.begin()) - 1;
@@ -71,7 +62,7 @@ class Distribution1D {
   static constexpr int kCountedCells = 16;
   std::vector<float> func_;
   /// n+1 entries, cdf_[0] = 0, cdf_[n] = 1; for n <= kCountedCells, then +inf up to a multiple
-  /// of four, so find_cell counts four at a time
+  /// of four (never counted: a loop of whole fours, which the compiler may count in vector steps)
   std::vector<float> cdf_;
   float integral_ = 0.0f;
   bool has_empty_cell_ = false;  ///< whether some cdf_[i + 1] <= cdf_[i] (zero, or rounded away)

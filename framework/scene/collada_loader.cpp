@@ -3,7 +3,10 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cerrno>
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -14,6 +17,7 @@
 #include <string_view>
 #include <unordered_map>
 #include <unordered_set>
+#include <utility>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -366,6 +370,29 @@ class ColladaReader {
   Scene scene_;
 };
 
+/// Reads the real number at p (no space before it, NUL-terminated after `end`) as std::from_chars
+/// reads one: decimal or "inf"/"nan", no '+', no hexadecimal (of "0x1" only the "0" is read),
+/// correctly rounded; ec is result_out_of_range when it is too large for T or rounds to zero.
+/// std::strtod does the reading, since libc++ (macOS's standard library) has no floating-point
+/// from_chars; it reads in the C locale, which this program never changes.
+template <class T>
+std::from_chars_result read_real(const char* p, const char* end, T& value) {
+  const char* digits = p + (p < end && *p == '-' ? 1 : 0);
+  if (digits < end && (*digits == '+' || std::isspace(static_cast<unsigned char>(*digits))))
+    return {p, std::errc::invalid_argument};
+  if (digits + 1 < end && digits[0] == '0' && (digits[1] == 'x' || digits[1] == 'X')) {
+    value = p == digits ? T(0) : -T(0);
+    return {digits + 1, std::errc()};
+  }
+  char* stop = nullptr;
+  errno = 0;
+  const T v = std::is_same_v<T, float> ? T(std::strtof(p, &stop)) : T(std::strtod(p, &stop));
+  if (stop == p) return {p, std::errc::invalid_argument};
+  if (errno == ERANGE && (v == T(0) || std::isinf(v))) return {stop, std::errc::result_out_of_range};
+  value = v;
+  return {stop, std::errc()};
+}
+
 template <class T>
 void ColladaReader::parse_list(pugi::xml_node el, std::vector<T>& out) const {
   const char* p = el.child_value();
@@ -379,7 +406,7 @@ void ColladaReader::parse_list(pugi::xml_node el, std::vector<T>& out) const {
     T value{};
     std::from_chars_result r;
     if constexpr (std::is_floating_point_v<T>) {
-      r = std::from_chars(p, end, value);
+      r = read_real(p, end, value);
     } else {
       long long v = 0;
       r = std::from_chars(p, end, v);
@@ -698,8 +725,14 @@ void ColladaReader::read_effect(pugi::xml_node effect, Material& m) {
       } else if (kind == "microfacet") {
         m.kind = MaterialKind::microfacet;
         roughness("alpha");
-        vec("eta", m.eta);
-        vec("k", m.k);
+        // The conductor's complex index of refraction, per channel: neither part is negative.
+        for (auto [field, out] : {std::pair<const char*, glm::vec3*>{"eta", &m.eta}, {"k", &m.k}}) {
+          vec(field, *out);
+          if (out->x < 0.0f || out->y < 0.0f || out->z < 0.0f) {
+            warn(bsdf.child(field), std::string("a negative ") + field + " is impossible; clamped to 0");
+            *out = glm::max(*out, glm::vec3(0.0f));
+          }
+        }
       } else if (kind == "diffuse") {
         m.kind = MaterialKind::diffuse;
         fraction("albedo", m.albedo);

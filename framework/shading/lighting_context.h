@@ -3,7 +3,7 @@
 #pragma once
 
 #include "framework/geometry/ray_query.h"
-#include "framework/lights/light_sampler.h"
+#include "framework/lights/light_set.h"
 #include "framework/scene/scene.h"
 
 namespace pt {
@@ -12,7 +12,7 @@ namespace pt {
 struct LightingContext {
   const Scene& scene;
   const RayQuery& query;
-  const LightSampler& lights;  ///< LightSet's questions (light_sampler.h says why not the set)
+  const LightSet& lights;
   int light_samples = 1;          ///< -l: samples per non-delta light (delta lights take one)
   bool hemisphere = false;        ///< -H: direct light by uniform hemisphere sampling
   bool mis = false;               ///< --mis: direct light by light and BSDF samples, weighted

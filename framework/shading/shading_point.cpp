@@ -34,11 +34,15 @@ ShadingPointBase::ShadingPointBase(const Scene& scene, const Ray& ray, const Sur
       mirror_ = MirrorBsdf(material->reflectance);
       bsdf = &mirror_;
       break;
+    case MaterialKind::microfacet:
+      microfacet_ = MicrofacetBsdf(material->roughness, material->eta, material->k);
+      bsdf = &microfacet_;
+      break;
     case MaterialKind::emission:  // the course's emitters glow and reflect nothing
       bsdf = &black_;
       break;
-    default:  // diffuse; microfacet is rendered by its diffuse albedo until a part renders it
-      break;  // ShadingPointWith makes the diffuse BSDF
+    default:  // diffuse: ShadingPointWith makes the diffuse BSDF
+      break;
   }
   if (material->kind != MaterialKind::glass && glm::dot(to_viewer, ng) < 0.0f) {
     ng = -ng;

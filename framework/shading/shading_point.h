@@ -2,12 +2,13 @@
 //
 // The diffuse BSDF is the student's (Part 3), so the framework names it only as a template
 // parameter: Part 3 says `using ShadingPoint = ShadingPointWith<DiffuseBsdf>;` and lighting code
-// writes ShadingPoint(scene, ray, hit). The mirror, glass and the emitters' black BSDF are the
-// framework's own.
+// writes ShadingPoint(scene, ray, hit). The mirror, glass, the course's microfacet conductor and
+// the emitters' black BSDF are the framework's own.
 #pragma once
 
 #include "framework/bsdf/black.h"
 #include "framework/bsdf/bsdf.h"
+#include "framework/bsdf/microfacet_bsdf.h"
 #include "framework/bsdf/specular.h"
 #include "framework/geometry/surface_hit.h"
 #include "framework/math/frame.h"
@@ -39,11 +40,11 @@ class ShadingPointBase {
  private:
   MirrorBsdf mirror_;
   GlassBsdf glass_;
+  MicrofacetBsdf microfacet_;
   BlackBsdf black_;  ///< a CGL emission material: it glows and reflects nothing
 };
 
-/// A shading point whose diffuse materials (and microfacet ones, drawn by their diffuse albedo
-/// until a part renders them) get a `Diffuse(material->albedo)`.
+/// A shading point whose diffuse materials get a `Diffuse(material->albedo)`.
 template <class Diffuse>
 class ShadingPointWith final : public ShadingPointBase {
  public:

@@ -11,7 +11,6 @@
 
 #include "framework/bsdf/bsdf.h"
 #include "framework/geometry/surface_hit.h"
-#include "framework/lights/light_sampler.h"
 #include "framework/lights/light_set.h"
 #include "framework/sampling/rng.h"
 #include "framework/sampling/warp.h"
@@ -23,11 +22,10 @@ namespace pt::test {
 /// A scene with its query and lights, and a context over them with the given settings.
 struct Rig {
   explicit Rig(const Scene& s)
-      : scene(s), query(scene), lights(scene), sampler(lights), ctx{scene, query, sampler} {}
+      : scene(s), query(scene), lights(scene), ctx{scene, query, lights} {}
   Scene scene;
   DoubleQuery query;
   LightSet lights;
-  LightSampler sampler;  ///< the context's lights: the set, sampled call by call
   LightingContext ctx;
 };
 

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <vector>
 
-#include <boost/math/distributions/students_t.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
@@ -15,6 +14,7 @@
 #include "framework/scene/light.h"
 #include "framework/scene/scene.h"
 #include "framework/testing/observed_counters.h"
+#include "framework/stats/distributions.h"
 
 namespace pt::test {
 
@@ -189,8 +189,7 @@ inline MeanCheck t_test_mean(const std::vector<double>& xs, double expected, dou
     return r;
   }
   r.t = (m - expected) / r.stderr_;
-  boost::math::students_t dist(n - 1);
-  double critical = boost::math::quantile(boost::math::complement(dist, alpha / 2));
+  const double critical = students_t_two_sided_critical(n - 1, alpha);
   r.pass = std::abs(r.t) <= critical;
   return r;
 }

@@ -3,6 +3,9 @@
 
 #include <string>
 
+#include <glm/vec3.hpp>
+
+#include "framework/sampling/rng.h"
 #include "grader/judge/record.h"
 
 namespace pt::judge {
@@ -27,6 +30,17 @@ inline bool get_bool(Fn fn, Cursor& out) {
   uint8_t b = out.get<uint8_t>();
   if (b > 1) throw RecordError(std::string("the record of ") + name_of(fn) + " holds no bool");
   return b != 0;
+}
+
+/// An estimator's replay (Parts 3 and 4 share its shape): the radiance, and the generator as the
+/// student's function left it.
+inline glm::vec3 replay_estimate(Fn fn, Rng& rng) {
+  JudgeCall call(fn);
+  Cursor& out = call.finish();
+  glm::vec3 L = out.get<glm::vec3>();
+  rng = out.get<Rng>();
+  all_read(fn, out);
+  return L;
 }
 
 }  // namespace pt::judge

@@ -18,14 +18,6 @@ glm::vec3 replay_vec3(Fn fn) {
   return v;
 }
 
-glm::vec3 replay_estimate(Fn fn, Rng& rng) {
-  JudgeCall call(fn);
-  Cursor& out = call.finish();
-  glm::vec3 L = out.get<glm::vec3>();
-  rng = out.get<Rng>();
-  judge::all_read(fn, out);
-  return L;
-}
 }  // namespace
 
 glm::vec3 DiffuseBsdf::f(const glm::vec3&, const glm::vec3&) const {
@@ -55,13 +47,13 @@ glm::vec3 zero_bounce_radiance(const LightingContext&, const Ray&, const Surface
   return replay_vec3(Fn::zero_bounce_radiance);
 }
 glm::vec3 estimate_direct_hemisphere(const LightingContext&, const ShadingPoint&, Rng& rng) {
-  return replay_estimate(Fn::estimate_direct_hemisphere, rng);
+  return judge::replay_estimate(Fn::estimate_direct_hemisphere, rng);
 }
 glm::vec3 estimate_direct_importance(const LightingContext&, const ShadingPoint&, Rng& rng) {
-  return replay_estimate(Fn::estimate_direct_importance, rng);
+  return judge::replay_estimate(Fn::estimate_direct_importance, rng);
 }
 glm::vec3 one_bounce_radiance(const LightingContext&, const ShadingPoint&, Rng& rng) {
-  return replay_estimate(Fn::one_bounce_radiance, rng);
+  return judge::replay_estimate(Fn::one_bounce_radiance, rng);
 }
 
 }  // namespace pt

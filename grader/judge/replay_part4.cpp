@@ -9,25 +9,14 @@ using judge::Cursor;
 using judge::Fn;
 using judge::JudgeCall;
 
-namespace {
-glm::vec3 replay_estimate(Fn fn, Rng& rng) {
-  JudgeCall call(fn);
-  Cursor& out = call.finish();
-  glm::vec3 L = out.get<glm::vec3>();
-  rng = out.get<Rng>();
-  judge::all_read(fn, out);
-  return L;
-}
-}  // namespace
-
 glm::vec3 direct_radiance(const LightingContext&, const ShadingPoint&, Rng& rng) {
-  return replay_estimate(Fn::direct_radiance, rng);
+  return judge::replay_estimate(Fn::direct_radiance, rng);
 }
 glm::vec3 at_least_one_bounce_radiance(const LightingContext&, const ShadingPoint&, int, Rng& rng) {
-  return replay_estimate(Fn::at_least_one_bounce_radiance, rng);
+  return judge::replay_estimate(Fn::at_least_one_bounce_radiance, rng);
 }
 glm::vec3 estimate_global_illumination(const LightingContext&, const Ray&, Rng& rng) {
-  return replay_estimate(Fn::estimate_global_illumination, rng);
+  return judge::replay_estimate(Fn::estimate_global_illumination, rng);
 }
 float power_heuristic(int, float, int, float) {
   JudgeCall call(Fn::power_heuristic);
@@ -37,7 +26,7 @@ float power_heuristic(int, float, int, float) {
   return w;
 }
 glm::vec3 estimate_direct_mis(const LightingContext&, const ShadingPoint&, Rng& rng) {
-  return replay_estimate(Fn::estimate_direct_mis, rng);
+  return judge::replay_estimate(Fn::estimate_direct_mis, rng);
 }
 
 }  // namespace pt

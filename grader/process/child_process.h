@@ -70,7 +70,10 @@ struct ChildResult {
 /// runs under a keeper process that is a child subreaper (PR_SET_CHILD_SUBREAPER): whatever the
 /// child starts, even after setsid() or a double fork, stays below the keeper, and when the
 /// child ends (or a limit is reached) the keeper kills and reaps every remaining descendant
-/// (and, under a user of its own, every process of that user) before it reports.
+/// (and, under a user of its own, every process of that user) before it reports. Built without
+/// that keeper (PT_LINUX_SANDBOX off: every system but Linux), the child is a process group of
+/// its own that is killed at its end: what leaves the group is not followed, and `uid`/`gid` are
+/// refused (grader/process/posix_runner.cpp).
 ChildResult run_child(const std::vector<std::string>& argv, const ChildOptions& options);
 
 /// The same with a wall-time limit only (the other limits off), the caller's user.

@@ -19,6 +19,11 @@
 namespace pt {
 namespace {
 
+/// Whether this build runs children under the Linux keeper (PT_LINUX_SANDBOX): what only the
+/// keeper does (following what left the group, a user of its own) is checked only then.
+constexpr bool kLinuxKeeper = PT_LINUX_SANDBOX != 0;
+constexpr const char* kNoKeeper = "built without the Linux keeper (PT_LINUX_SANDBOX off)";
+
 TEST(FrameworkChildProcess, ExitStatusAndOutputAreCaptured) {
   ChildResult r = run_child({"sh", "-c", "echo to-out; echo to-err >&2; exit 3"}, 10.0);
   EXPECT_TRUE(r.started);
@@ -101,6 +106,7 @@ pid_t read_pid(const std::filesystem::path& file) {
 }
 
 TEST(FrameworkChildProcess, ADescendantThatLeftTheGroupIsEndedWithTheChild) {
+  if (!kLinuxKeeper) GTEST_SKIP() << kNoKeeper;
   // setsid puts the grandchild in a session and group of its own, out of reach of a group kill;
   // it would write a file after the check, but the keeper (a subreaper) ends it.
   test::TempFolder dir("pt-child-setsid");
@@ -118,6 +124,7 @@ TEST(FrameworkChildProcess, ADescendantThatLeftTheGroupIsEndedWithTheChild) {
 }
 
 TEST(FrameworkChildProcess, ADoubleForkedDaemonIsEndedToo) {
+  if (!kLinuxKeeper) GTEST_SKIP() << kNoKeeper;
   test::TempFolder dir("pt-child-daemon");
   std::filesystem::path late = dir.path() / "late";
   std::string script = "( ( sleep 1; echo x > " + late.string() + " ) & ) ; exit 0";
@@ -178,6 +185,7 @@ TEST(FrameworkChildProcess, EnvironmentIsAdded) {
 }
 
 TEST(FrameworkChildProcess, AKilledKeeperIsAnUnknownStatusAndAFailure) {
+  if (!kLinuxKeeper) GTEST_SKIP() << kNoKeeper;
   // Only a child of our own user can do this (its parent is the keeper): no wait status comes
   // back, and that must never read as success.
   ChildResult r = run_child({"sh", "-c", "kill -9 $PPID; exit 0"}, limited(10.0));
@@ -186,6 +194,7 @@ TEST(FrameworkChildProcess, AKilledKeeperIsAnUnknownStatusAndAFailure) {
 }
 
 TEST(FrameworkChildProcess, TheTreeEndsWhenTheCallerDies) {
+  if (!kLinuxKeeper) GTEST_SKIP() << kNoKeeper;
   // A caller killed in the middle (a grader stopped by its own harness) takes its children's
   // trees with it: the keeper sees its parent go and ends the tree.
   test::TempFolder dir("pt-child-caller");
@@ -210,6 +219,7 @@ TEST(FrameworkChildProcess, TheTreeEndsWhenTheCallerDies) {
 }
 
 TEST(FrameworkChildProcess, AnotherUserAndItsProcessLimit) {
+  if (!kLinuxKeeper) GTEST_SKIP() << kNoKeeper;
   if (geteuid() != 0) GTEST_SKIP() << "switching users needs root";
   const long nobody = 65534;
   ChildOptions o = limited(30.0);
@@ -240,6 +250,17 @@ TEST(FrameworkChildProcess, SwitchingUserWithoutRootIsRefused) {
   ChildResult r = run_child({"true"}, o);
   EXPECT_FALSE(r.started);
   EXPECT_FALSE(r.ok());
+}
+
+TEST(FrameworkChildProcess, WithoutTheKeeperAnotherUserIsRefused) {
+  if (kLinuxKeeper) GTEST_SKIP() << "the Linux keeper may switch users";
+  ChildOptions o = limited(10.0);
+  o.uid = 65534;
+  o.gid = 65534;
+  ChildResult r = run_child({"true"}, o);
+  EXPECT_FALSE(r.started);
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(r.errors.find("PT_LINUX_SANDBOX"), std::string::npos) << r.errors;
 }
 
 }  // namespace

@@ -6,7 +6,6 @@
 #include <glm/geometric.hpp>
 
 #include "framework/math/float_error.h"
-#include "framework/math/vec3_lanes.h"
 #include "parts/1-raygen/sphere_intersect.h"
 #include "parts/1-raygen/triangle_intersect.h"
 
@@ -30,39 +29,6 @@ bool triangle_surface_hit(const Scene& scene, uint32_t primitive, const Triangle
 bool triangle_surface_hit(const Scene& scene, uint32_t primitive, const TriangleHit& th,
                           const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2,
                           const uint32_t vertex[3], SurfaceHit* hit) {
-#if PT_SSE2
-  // Every full hit a wide tree reports comes here: triangle_surface_hit_portable's operations in
-  // lanes, the same bits (scene_intersect_test.cpp holds them to it).
-  using namespace lanes;
-  const V3 c0 = load(p0), c1 = load(p1), c2 = load(p2);
-  const V3 cross = lanes::cross(sub(c1, c0), sub(c2, c0));
-  const float len = std::sqrt(lanes::dot(cross, cross));
-  if (!(len > 0.0f) || !std::isfinite(len)) return false;
-  V3 ng = div(cross, splat(len));
-  const V3 a = mul(splat(th.b0), c0), b = mul(splat(th.b1), c1), c = mul(splat(th.b2), c2);
-  hit->p = to_vec3(add(add(a, b), c));
-  hit->p_error = to_vec3(mul(splat(gamma(7)), add(add(glm_abs(a), glm_abs(b)), glm_abs(c))));
-  V3 n = ng;
-  if (!scene.normals.empty()) {
-    const glm::vec3 ns = interpolate_normal(th, scene.normals[vertex[0]], scene.normals[vertex[1]],
-                                            scene.normals[vertex[2]]);
-    if (all_finite(ns) && glm::dot(ns, ns) > 0.0f) n = load(ns);
-  }
-  if (lanes::dot(ng, n) < 0.0f) ng = neg(ng);
-  hit->t = th.t;
-  hit->ng = to_vec3(ng);
-  hit->n = to_vec3(n);
-  hit->primitive = primitive;
-  hit->material = scene.triangles[primitive].material;
-  return true;
-#else
-  return triangle_surface_hit_portable(scene, primitive, th, p0, p1, p2, vertex, hit);
-#endif
-}
-
-bool triangle_surface_hit_portable(const Scene& scene, uint32_t primitive, const TriangleHit& th,
-                                   const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2,
-                                   const uint32_t vertex[3], SurfaceHit* hit) {
   // A triangle whose corners are collinear in float has no normal to shade or offset along: it
   // is treated as the zero-area sliver it is.
   const glm::vec3 cross = glm::cross(p1 - p0, p2 - p0);

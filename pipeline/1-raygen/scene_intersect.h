@@ -27,11 +27,6 @@ bool triangle_surface_hit(const Scene& scene, uint32_t primitive, const Triangle
 bool triangle_surface_hit(const Scene& scene, uint32_t primitive, const TriangleHit& th,
                           const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2,
                           const uint32_t vertex[3], SurfaceHit* hit);
-/// Its definition in glm, one component at a time: the overload above does the same operations
-/// in SIMD lanes where the build has them, and gives the same bits.
-bool triangle_surface_hit_portable(const Scene& scene, uint32_t primitive, const TriangleHit& th,
-                                   const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2,
-                                   const uint32_t vertex[3], SurfaceHit* hit);
 
 /// Whether primitive `primitive` blocks `ray` somewhere in (tmin, tmax).
 bool primitive_occludes(const Scene& scene, uint32_t primitive, const Ray& ray);

@@ -16,8 +16,7 @@ std::unique_ptr<Integrator> Integrator::create(const RenderSettings& settings, c
     if (!in->environment_->load(settings.environment_map, error)) return nullptr;
   }
   in->lights_ = std::make_unique<LightSet>(scene, in->environment_.get());
-  in->sampler_ = std::make_unique<LightSampler>(*in->lights_);
-  in->ctx_.reset(new LightingContext{scene, query, *in->sampler_});
+  in->ctx_.reset(new LightingContext{scene, query, *in->lights_});
   LightingContext& c = *in->ctx_;
   c.light_samples = std::max(1, settings.light_samples);
   c.hemisphere = settings.hemisphere_sampling;
@@ -51,10 +50,8 @@ glm::vec3 Integrator::radiance(const Ray& ray, Rng& rng) const {
 
 glm::vec3 Integrator::radiance(const Ray& ray, Rng& rng, const RayQuery& query) const {
   const LightingContext& c = *ctx_;
-  // The camera sample's own lights, which may foresee its light samples from `rng`, and every
-  // field of the context but the query and lights, which references cannot be reseated to.
-  const LightSampler lights(*lights_, &rng, c.light_samples);
-  LightingContext sample_context{c.scene, query, lights};
+  // Every field of the context but the query, which a reference cannot be reseated to.
+  LightingContext sample_context{c.scene, query, c.lights};
   sample_context.light_samples = c.light_samples;
   sample_context.hemisphere = c.hemisphere;
   sample_context.mis = c.mis;

@@ -9,7 +9,6 @@
 
 #include "framework/geometry/ray_query.h"
 #include "framework/lights/environment_map.h"
-#include "framework/lights/light_sampler.h"
 #include "framework/lights/light_set.h"
 #include "framework/render/render_settings.h"
 #include "framework/sampling/rng.h"
@@ -42,7 +41,6 @@ class Integrator {
   Integrator() = default;
   std::unique_ptr<EnvironmentMap> environment_;
   std::unique_ptr<LightSet> lights_;
-  std::unique_ptr<LightSampler> sampler_;  ///< context()'s lights, which foresee nothing
   std::unique_ptr<LightingContext> ctx_;
   bool normals_ = false;
   bool direct_only_ = false;  ///< Part 3's estimate is the whole answer (no Part 4 code runs)

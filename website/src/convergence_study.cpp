@@ -27,7 +27,7 @@ CachedStudy StudyCache::study(const fs::path& scene, const std::string& flags) {
   if (!fs::is_regular_file(scene)) throw RenderError("scene file " + scene.string() + " not found");
   std::vector<std::string> args = split_flags(flags);
   for (const std::string& a : args) {
-    if (a == "--out" || a == "--convergence") {
+    if (a == "--out") {
       throw RenderError("the study's flags must not contain " + a + ": the write-up names them");
     }
   }
@@ -39,7 +39,7 @@ CachedStudy StudyCache::study(const fs::path& scene, const std::string& flags) {
                    .add(flags)
                    .add(binary_hash_)
                    .hex();
-  result.command = "bench --convergence " + scene.filename().string() +
+  result.command = "bench convergence " + scene.filename().string() +
                    (flags.empty() ? "" : " ") + flags;
   const fs::path entry = cache_dir_ / ("convergence-" + result.key);
   auto finish = [&] {
@@ -56,7 +56,7 @@ CachedStudy StudyCache::study(const fs::path& scene, const std::string& flags) {
   const fs::path scratch = cache_dir_ / ("convergence-" + result.key + ".partial");
   fs::remove_all(scratch);
   fs::create_directories(scratch);
-  std::vector<std::string> argv = {bench_.string(), "--convergence", scene.string()};
+  std::vector<std::string> argv = {bench_.string(), "convergence", scene.string()};
   argv.insert(argv.end(), args.begin(), args.end());
   argv.insert(argv.end(), {"--out", scratch.string()});
   auto start = std::chrono::steady_clock::now();

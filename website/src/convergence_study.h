@@ -1,4 +1,4 @@
-// The run-time-against-error table of a write-up made on the spot: `bench --convergence` runs
+// The run-time-against-error table of a write-up made on the spot: `bench convergence` runs
 // as a child with a small budget, and its table is kept in the render cache, keyed like a render.
 #pragma once
 
@@ -20,7 +20,7 @@ struct CachedStudy {
   bool from_cache = false;
 };
 
-/// Runs `bench --convergence` once per distinct (scene, flags, binary) and remembers the result.
+/// Runs `bench convergence` once per distinct (scene, flags, binary) and remembers the result.
 class StudyCache {
  public:
   /// Throws RenderError when there is no bench executable at `bench`.

@@ -652,7 +652,7 @@ class SiteBuilder {
   }
 
   /// Error against time (or samples) from a table: the student's own (csv= or json= beside the
-  /// source), or one `bench --convergence` makes on the spot (scene=, flags=), cached.
+  /// source), or one `bench convergence` makes on the spot (scene=, flags=), cached.
   std::string plot_figure(const Directive& d, int line) {
     check_attributes(d, line, "a plot", {"csv", "json", "scene", "flags", "x", "title", "caption"});
     std::string table = d.get("csv", d.get("json"));

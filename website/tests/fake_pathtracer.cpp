@@ -1,11 +1,11 @@
-// A stand-in for the pathtracer (and for bench --convergence) in the website's tests: takes the
+// A stand-in for the pathtracer (and for bench convergence) in the website's tests: takes the
 // same -r/-f flags, writes a small gradient image at once (PNG, or a linear EXR), prints the
 // pathtracer's summary line, writes a "_rate" image with -a, and logs each run, so the tests can
 // count renders without waiting for real ones. The picture depends on the flags: -m K scales it
 // by K/5 (so a difference of two depths is known), and the blue channel is a hash of the other
 // flags (so two renders with different flags look different); --bvh none takes 100 times
 // as long by its summary line. `--fail` exits with an error
-// message, `--hang` sleeps for a minute. With --convergence it writes bench's table and summary.
+// message, `--hang` sleeps for a minute. As `bench convergence` it writes bench's table and summary.
 #include <OpenImageIO/imageio.h>
 
 #include <unistd.h>
@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
     } else if (a == "-a") {
       adaptive = true;
       flags += a;
-    } else if (a == "--convergence") {
+    } else if (a == "convergence" && i == 1) {
       study = true;
     } else if (a == "--bvh" && i + 1 < argc) {
       brute_force = std::string(argv[++i]) == "none";

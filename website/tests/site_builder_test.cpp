@@ -53,7 +53,7 @@ class WebsiteBuild : public ::testing::Test {
     o.web_dir = PT_WEBSITE_DIR;
     o.pathtracer = PT_FAKE_PATHTRACER;
     o.cache_dir = dir_.path() / "cache";
-    o.bench = PT_FAKE_PATHTRACER;  // it stands in for bench --convergence too
+    o.bench = PT_FAKE_PATHTRACER;  // it stands in for bench convergence too
     o.quick = quick;
     o.time_limit_seconds = time_limit;
     return pt::web::build_site(o);
@@ -287,7 +287,7 @@ TEST_F(WebsiteBuild, PlotOfAMissingTableIsMeasuredOnceAndCached) {
   EXPECT_NE(html.find("<img src=\"plots/convergence-scene-seconds.svg\" width=\"640\""), std::string::npos)
       << html;
   EXPECT_NE(html.find("href=\"plots/convergence-scene.csv\""), std::string::npos);
-  EXPECT_NE(html.find("bench --convergence scene.dae --budgets 1,4,16"), std::string::npos);
+  EXPECT_NE(html.find("bench convergence scene.dae --budgets 1,4,16"), std::string::npos);
   // bench's summary: the time each strategy needs to reach the target error.
   EXPECT_NE(html.find("class=\"time-to-target\""), std::string::npos);
   EXPECT_NE(html.find("≈ 16.0 s"), std::string::npos) << html;

@@ -1,6 +1,7 @@
 // Three-float vectors in the lanes of one SSE register, each operation the very one glm does
-// component by component (so the same bits), for the few framework paths every light sample and
-// shadow ray takes: glm's vec3 code runs one component at a time.
+// component by component (so the same bits), for the paths every light sample, shadow ray and
+// wide-tree hit takes in the instructor's build: glm's vec3 code runs one component at a time.
+// SOLUTION-ONLY FILE: not in the student handout, since it is the instructor's build's speed.
 #pragma once
 
 #include <cstdint>
@@ -8,7 +9,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "framework/math/sse.h"
+#include "app/fast/sse.h"
 #ifdef __SSE4_1__
 #include <smmintrin.h>
 #endif

@@ -1,5 +1,6 @@
 // Whether the build targets SSE2 (every x86-64 build does): the one test each SIMD path of the
-// project asks, so that they all agree on when their lanes exist.
+// instructor's build asks (app/fast, app/accel), so that they all agree on when lanes exist.
+// SOLUTION-ONLY FILE: not in the student handout, since it is the instructor's build's speed.
 #pragma once
 
 #if defined(__SSE2__) || defined(_M_X64) || (defined(_M_IX86_FP) && _M_IX86_FP >= 2)

@@ -1,0 +1,105 @@
+// One camera sample's light samples and shadow rays, made several at a time where the estimate's
+// next random numbers are known: the instructor's build's FasterLightSampling.
+// SOLUTION-ONLY FILE: not in the student handout, since it is the instructor's build's speed.
+#pragma once
+
+#include <cstring>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "framework/geometry/surface_hit.h"
+#include "framework/lights/faster_light_sampling.h"
+#include "framework/lights/light_set.h"
+#include "framework/math/ray.h"
+#include "framework/sampling/rng.h"
+
+namespace pt {
+
+/// LightSet::make_sample and make_shadow_ray's answers, bit for bit, for one camera sample. A
+/// light sample is one chain of long operations (a square root, divisions waiting on it), and the
+/// shadow ray and its walk wait on it in turn, so samples made one call at a time hardly overlap.
+/// When an estimate asks for a sample of a panel or mesh light, this therefore also makes the ones
+/// it is about to ask for (the same light, the same point, and the numbers the camera sample's Rng
+/// will give next, read from a copy of it), side by side: a quad panel's in eight AVX lanes, with
+/// each sample's shadow ray. The next calls are answered from them.
+///
+/// A panel's or mesh's sample is a function of the light, the point and u alone, and a call is
+/// answered from the batch only when all three are, to the bit, what its sample was made with;
+/// a shadow ray only when the sample and the point asking are, to the bit, those it was made
+/// from. Any other call is answered anew (in SSE lanes, lane_rays.h). So every answer is the
+/// definition's whatever the estimate draws, and an estimate that draws its numbers otherwise
+/// only loses the time of one batch before this stops foreseeing.
+class LightBatches final : public FasterLightSampling {
+ public:
+  /// The most samples made together.
+  static constexpr int kBatch = 8;
+
+  /// `rng`: the generator the camera sample's estimate draws from (read, never advanced), or null
+  /// to make every sample on its own; `light_samples`: how many samples the estimate takes of
+  /// each area light (-l), the most a batch makes for one light and point.
+  explicit LightBatches(const Rng* rng = nullptr, int light_samples = 1)
+      : rng_(rng), light_samples_(light_samples), foresee_(rng != nullptr && light_samples > 1) {}
+
+  LightSample sample(const LightSet& set, int index, const SurfaceHit& hit, glm::vec2 u) override {
+    if (next_ < count_ && &set == set_ && index == light_ && same_bits(hit.p, p_) &&
+        same_bits(u, u_[next_])) {
+      last_ = next_;
+      return copy_of(batch_.at[next_++]);  // the counts are settled when the batch is done
+    }
+    last_ = -1;
+    if (!foresee_) return set.make_sample(index, hit, u);
+    return sample_anew(set, index, hit, u);
+  }
+
+  Ray shadow_ray(const SurfaceHit& hit, const LightSample& ls) override;
+
+  /// How many calls were answered from a batch, how many samples were made in one but never asked
+  /// for, and how many shadow rays were handed out as made in a batch (tests).
+  int answered_ahead() const { return answered_ahead_ + (next_ > 1 ? next_ - 1 : 0); }
+  int made_in_vain() const { return made_in_vain_; }
+  int rays_handed_out() const { return rays_handed_out_; }
+
+ private:
+  static bool same_bits(const glm::vec3& a, const glm::vec3& b) {
+    return std::memcmp(&a, &b, sizeof(glm::vec3)) == 0;
+  }
+  static bool same_bits(glm::vec2 a, glm::vec2 b) { return std::memcmp(&a, &b, sizeof(glm::vec2)) == 0; }
+  /// `ls`, copied as the batch writes a sample (light_batches.cpp says why).
+  static LightSample copy_of(const LightSample& ls);
+  /// A call the batch does not answer: a new batch when foreseeing is on and pays, else one sample.
+  /// Never inlined into sample(): its frame (eight-lane locals, saved registers) would be paid by
+  /// every call the batch answers.
+  [[gnu::noinline]] LightSample sample_anew(const LightSet& set, int index, const SurfaceHit& hit, glm::vec2 u);
+
+  const Rng* rng_;
+  int light_samples_;
+  bool foresee_;  ///< a generator to read, several samples a light, no misprediction yet
+  // The batch: samples of light_ of set_ from p_ for the numbers u_, the next to answer
+  // batch_[next_], the last answered batch_[last_] (-1: the last answer was not the batch's).
+  const LightSet* set_ = nullptr;
+  int light_ = -1;
+  glm::vec3 p_{0.0f};
+  int count_ = 0, next_ = 0, last_ = -1;
+  int before_ = 0;  ///< samples of light_ from p_ answered before this batch
+  int answered_ahead_ = 0, made_in_vain_ = 0, rays_handed_out_ = 0;
+  glm::vec2 u_[kBatch];
+  /// Which of the batch's samples carry their shadow ray (a bit each), made from the point whose
+  /// p, p_error and ng are from_.
+  int rays_made_ = 0;
+  float from_[9];
+  /// The batch's samples and rays, left unwritten until a batch fills them: one of these is made
+  /// for every camera sample, and clearing them each time would cost a render that never batches.
+  union Batch {
+    Batch() {}
+    LightSample at[kBatch];
+  };
+  union Rays {
+    Rays() {}
+    Ray at[kBatch];
+  };
+  Batch batch_;
+  Rays rays_;
+};
+
+}  // namespace pt
