@@ -224,8 +224,7 @@ std::vector<JudgedOutcome> run_judged_tests(const std::vector<JudgedTest>& tests
                                             const Sandbox& sandbox, double wall_seconds,
                                             const std::string& work_dir) {
   std::vector<JudgedOutcome> results(tests.size());
-  const int lanes = sandbox.protects() ? std::max(1, std::min<int>(sandbox.jobs, int(tests.size())))
-                                       : std::max(1, std::min<int>(sandbox.jobs, int(tests.size())));
+  const int lanes = std::max(1, std::min<int>(sandbox.jobs, int(tests.size())));
   std::atomic<size_t> next{0};
   auto lane_work = [&](int k) {
     Sandbox mine = sandbox.protects() ? sandbox.lane(k) : sandbox;
