@@ -25,6 +25,7 @@
 #include "grader/judged_tests.h"
 #include "grader/reference_mean.h"
 #include "grader/scene_variant.h"
+#include "grader/step_at_fault.h"
 
 namespace fs = std::filesystem;
 
@@ -349,7 +350,8 @@ std::string render_rests_on_line(const PartSpec& spec, const RenderCheck& check,
     any_failing = any_failing || failed > 0 || counted == 0;
     line += ")";
   }
-  return line + (any_failing ? ": fix the failing step first, this render may fail for it."
+  return line + (any_failing ? ": fix the failing step first, this render may fail for it "
+                               "(while it fails, the render's points are charged to it)."
                              : ": their checks pass, so look first at this step's code.");
 }
 
@@ -585,6 +587,7 @@ PartResult grade_part(const Manifest& manifest, int part, const GradeOptions& op
     if (!test_problem.empty() && r.counted() == 0) r.message = test_problem;
     result.steps.push_back(std::move(r));
   }
+  charge_steps_at_fault(*spec, result.steps);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

@@ -129,6 +129,11 @@ Manifest read_manifest(const std::string& path) {
         if (!(st.points >= 0.0)) bad(path, sw, "points must be >= 0");
         st.functions = optional(sj, "functions", std::vector<std::string>());
         st.rests_on = optional(sj, "rests_on", std::string());
+        st.tests_rest_on_steps = optional(sj, "tests_rest_on_steps", std::vector<int>());
+        for (int k : st.tests_rest_on_steps)
+          if (k < 1 || k >= st.step)
+            bad(path, sw, "tests_rest_on_steps names earlier steps of the part only (1 to " +
+                              std::to_string(st.step - 1) + ")");
         for (const auto& rj : optional(sj, "renders", nlohmann::ordered_json::array())) {
           RenderCheck r;
           r.part = p.part;

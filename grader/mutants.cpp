@@ -169,7 +169,14 @@ MutantOutcome judge_mutant(const MutantSpec& spec, const std::vector<StepLoss>& 
     std::string said = own->message;
     for (size_t at; (at = said.find(spec.name)) != std::string::npos;) said.erase(at, spec.name.size());
     bool true_hint = std::regex_search(said, std::regex(spec.hint, std::regex::icase));
-    o.verdict = elsewhere ? "ALSO ELSEWHERE" : (true_hint ? "ok" : "hint?");
+    // A bug that costs more than its step is worth: the step loses everything and the rest
+    // stays where it shows, each such step naming the mutant's (grader/step_at_fault.h).
+    bool spent = own->lost >= own->max_score - 1e-6;
+    for (const StepLoss& l : losses)
+      if (&l != own && std::regex_match(l.step, kStepName))
+        spent = spent && l.message.find(spec.step) != std::string::npos;
+    o.verdict = !elsewhere ? (true_hint ? "ok" : "hint?")
+                           : (spent && true_hint ? "OVERFLOW" : "ALSO ELSEWHERE");
   }
   return o;
 }
@@ -294,7 +301,7 @@ void print_mutant_table(std::ostream& out, const std::vector<MutantOutcome>& out
   auto pad = [](const std::string& s, size_t w) { return s + std::string(w > s.size() ? w - s.size() : 0, ' '); };
   out << pad("mutant", w_name) << "  " << pad("its step", w_step) << "  " << pad("verdict", 14)
       << "  lost points in (points)  |  message\n";
-  int good = 0;
+  int good = 0, spent = 0;
   for (const MutantOutcome& o : outcomes) {
     std::string lost;
     for (const StepLoss& l : o.losses) {
@@ -303,11 +310,15 @@ void print_mutant_table(std::ostream& out, const std::vector<MutantOutcome>& out
     }
     if (lost.empty()) lost = "-";
     if (o.verdict == "ok") ++good;
+    if (o.verdict == "OVERFLOW") ++spent;
     out << pad(o.spec.name, w_name) << "  " << pad(o.spec.step, w_step) << "  "
         << pad(o.verdict, 14) << "  " << lost << "  |  " << one_line(o.message) << "\n";
   }
   out << good << " of " << outcomes.size()
       << " mutants lose points in their own step only, with a message that names the cause";
+  if (spent > 0)
+    out << "; " << spent << " lose every point of their own step, the rest staying where it "
+        << "shows with a message naming their step (OVERFLOW)";
   if (seconds > 0) out << "; " << points(seconds) << " s";
   out << "\n";
 }

@@ -36,7 +36,7 @@ struct StepLoss {
 /// What grading one mutant showed.
 struct MutantOutcome {
   MutantSpec spec;
-  std::string verdict;  ///< "ok", "hint?", "PASSES", "ALSO ELSEWHERE", "WRONG STEP", "BUILD", "ERROR"
+  std::string verdict;  ///< "ok", "hint?", "OVERFLOW", "PASSES", "ALSO ELSEWHERE", "WRONG STEP", "BUILD", "ERROR"
   std::vector<StepLoss> losses;  ///< every step that lost points
   std::string message;           ///< the own step's message (else the first loss's, or the error)
   double seconds = 0.0;
@@ -51,7 +51,9 @@ std::vector<StepLoss> step_losses(const nlohmann::json& results);
 /// The verdict on a mutant from the steps that lost points: "ok" when only its own step did and
 /// the message matches its hint, "hint?" when only its own step did but the message does not
 /// name the cause, "PASSES" when nothing did, "ALSO ELSEWHERE" / "WRONG STEP" otherwise, and
-/// "RENDERS ONLY" when only checks named by no step (renders of a per-check grader) lost.
+/// "RENDERS ONLY" when only checks named by no step (renders of a per-check grader) lost;
+/// "OVERFLOW" when its own step lost every point and the rest stayed in steps whose messages
+/// name its step as the one at fault (the bug costs more than its step is worth).
 MutantOutcome judge_mutant(const MutantSpec& spec, const std::vector<StepLoss>& losses);
 
 /// Options of `grader mutants`.

@@ -38,7 +38,7 @@ void print_score_table(std::ostream& out, const std::vector<PartResult>& results
       std::snprintf(line, sizeof line, "  %-34s %9s  %-6s %-14s %5.1fs\n", s.name.c_str(),
                     points(s.score, s.max_score).c_str(), verdict, checks.c_str(), seconds);
       out << line;
-      if (!s.passed() && p.built) {
+      if ((!s.passed() || s.failed() > 0) && p.built) {
         std::istringstream in(s.message);
         for (std::string l; std::getline(in, l);) out << "      " << l << "\n";
       }

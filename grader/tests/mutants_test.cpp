@@ -128,6 +128,22 @@ TEST(MutantVerdict, AnUntrueHintAPassAndAWrongStepAreEachNamed) {
   EXPECT_EQ(judge_mutant(s, step_losses(step_results(4.5, 2, "leak"))).verdict, "ALSO ELSEWHERE");
 }
 
+// A bug worth more than its step: all of its step's points lost, the rest where it shows, in a
+// step whose message names the mutant's step as the one at fault. Named apart from "ok".
+TEST(MutantVerdict, ABugWorthMoreThanItsStepIsAnOverflowNotOk) {
+  MutantSpec s = spec("part3.step1.diffuse_bsdf", "albedo");
+  json results = {{"tests",
+                   {{{"name", "part3.step1.diffuse_bsdf"}, {"score", 0}, {"max_score", 4}, {"output", "albedo off"}},
+                    {{"name", "part3.step4.importance"}, {"score", 8}, {"max_score", 9},
+                     {"output", "x runs step 1 (part3.step1.diffuse_bsdf), which fails: 0.5 stay here"}}}}};
+  EXPECT_EQ(judge_mutant(s, step_losses(results)).verdict, "OVERFLOW");
+  results["tests"][1]["output"] = "look first at this step's code";
+  EXPECT_EQ(judge_mutant(s, step_losses(results)).verdict, "ALSO ELSEWHERE");
+  results["tests"][1]["output"] = "x runs step 1 (part3.step1.diffuse_bsdf), which fails";
+  results["tests"][0]["score"] = 1;
+  EXPECT_EQ(judge_mutant(s, step_losses(results)).verdict, "ALSO ELSEWHERE");
+}
+
 TEST(MutantVerdict, PerCheckResultsGiveEachFailingTestsShareToItsStep) {
   json results = {{"tests",
                    {{{"name", "part3.build"}, {"score", 0}, {"max_score", 0}, {"output", "built"}},
