@@ -588,6 +588,7 @@ PartResult grade_part(const Manifest& manifest, int part, const GradeOptions& op
     result.steps.push_back(std::move(r));
   }
   charge_steps_at_fault(*spec, result.steps);
+  compare_with_gradescope(manifest, result, options);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
@@ -670,6 +671,45 @@ std::string rests_on_line(const Manifest& manifest, int part, const GradeOptions
     line += ")";
   }
   return line + ".";
+}
+
+void compare_with_gradescope(const Manifest& manifest, PartResult& result,
+                             const GradeOptions& options) {
+  const PartSpec* spec = manifest.find_part(result.part);
+  result.graded_alone = options.isolated;
+  if (!spec || options.isolated) return;
+  // The earlier parts of the student's that fail, as last graded.
+  const nlohmann::json state = read_state(options);
+  auto failing = [&](int k) {
+    const std::string key = std::to_string(k);
+    if (!state.contains(key) || !state[key].is_object()) return false;
+    return !state[key].value("built", true) || state[key].value("failing_steps", 0) > 0;
+  };
+  // With a complete solution apart (PT_SOLUTION_DIR), the tests run it, not the student's.
+  const bool tests_run_students = !has_separate_solution(options.build_dir).value_or(false);
+  std::set<int> ran;
+  double open = 0.0;
+  for (const StepResult& st : result.steps) {
+    const int counted = st.counted();
+    if (counted == 0) continue;
+    for (const CheckResult& c : st.checks) {
+      if (c.pass || c.skipped) continue;
+      const std::vector<int>& parts = c.kind == "render" ? spec->renders_rest_on
+                                      : tests_run_students ? spec->tests_rest_on
+                                                           : std::vector<int>();
+      bool open_check = false;
+      for (int k : parts)
+        if (failing(k)) {
+          ran.insert(k);
+          open_check = true;
+        }
+      if (!open_check) continue;
+      ++result.open_checks;
+      open += st.max_score / double(counted);
+    }
+  }
+  result.open_points = std::min(open, result.max_score() - result.score());
+  result.failing_parts_run.assign(ran.begin(), ran.end());
 }
 
 void record_state(const PartResult& result, const GradeOptions& options) {

@@ -43,6 +43,13 @@ struct PartResult {
   std::string rests_on;       ///< the one line on the earlier parts its renders run ("" if none)
   std::vector<StepResult> steps;
   std::vector<std::string> unassigned;  ///< tests whose name names no step of the manifest
+  /// How Gradescope's figure for this part relates to this one. Gradescope grades each part with
+  /// the course's complete solution of the other parts (as --isolated does), so a failing check
+  /// that here ran another part of the student's that fails may pass there.
+  bool graded_alone = false;            ///< graded as Gradescope grades it (--isolated, the bundle)
+  int open_checks = 0;                  ///< failing checks that ran a failing earlier part
+  double open_points = 0.0;             ///< their points: Gradescope gives at most this much more
+  std::vector<int> failing_parts_run;   ///< those earlier parts
   double seconds = 0.0;
   double score() const;
   double max_score() const;
@@ -106,6 +113,11 @@ StepResult score_step(const StepSpec& spec, std::vector<CheckResult> checks);
 /// The one line saying what part `part`'s renders rest on and the state of those parts when
 /// they were last graded (OUT/state.json), or "" when they rest on nothing.
 std::string rests_on_line(const Manifest& manifest, int part, const GradeOptions& options);
+
+/// Fills `result`'s view of Gradescope's figure: which of its failing checks ran an earlier
+/// part of the student's that fails (OUT/state.json), and their points.
+void compare_with_gradescope(const Manifest& manifest, PartResult& result,
+                             const GradeOptions& options);
 
 /// Records `result` in OUT/state.json for the next rests_on_line.
 void record_state(const PartResult& result, const GradeOptions& options);

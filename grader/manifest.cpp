@@ -113,10 +113,14 @@ Manifest read_manifest(const std::string& path) {
       p.test_timeout = optional(pj, "test_timeout", 60.0);
       p.build_timeout = optional(pj, "build_timeout", 1200.0);
       p.renders_rest_on = optional(pj, "renders_rest_on", std::vector<int>());
-      for (int earlier : p.renders_rest_on)
-        if (earlier < 1 || earlier >= p.part)
-          bad(path, where, "renders_rest_on names part " + std::to_string(earlier) +
-                               ", which is not an earlier part");
+      p.tests_rest_on = optional(pj, "tests_rest_on", std::vector<int>());
+      for (const auto& [field_name, list] : {std::pair<const char*, const std::vector<int>*>{
+                                                 "renders_rest_on", &p.renders_rest_on},
+                                             {"tests_rest_on", &p.tests_rest_on}})
+        for (int earlier : *list)
+          if (earlier < 1 || earlier >= p.part)
+            bad(path, where, std::string(field_name) + " names part " + std::to_string(earlier) +
+                                 ", which is not an earlier part");
       for (const auto& sj : field<nlohmann::ordered_json>(path, where, pj, "steps")) {
         StepSpec st;
         st.part = p.part;

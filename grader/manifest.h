@@ -76,6 +76,9 @@ struct PartSpec {
   double test_timeout = 60.0;           ///< per test
   double build_timeout = 1200.0;
   std::vector<int> renders_rest_on;     ///< earlier parts whose student code its renders run
+  /// Earlier parts whose student code its tests run where no complete solution stands in for
+  /// them (a handout: Part 2's traversal tests meet Part 1's triangles in the leaves).
+  std::vector<int> tests_rest_on;
   std::vector<StepSpec> steps;
 
   const StepSpec* find_step(int step) const;

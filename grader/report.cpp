@@ -16,7 +16,8 @@ std::string points(double score, double max) {
 }  // namespace
 
 void print_score_table(std::ostream& out, const std::vector<PartResult>& results) {
-  double total = 0.0, max = 0.0;
+  double total = 0.0, max = 0.0, open = 0.0;
+  bool alone = !results.empty();
   char line[240];
   for (const PartResult& p : results) {
     out << "\nPart " << p.part << "\n";
@@ -47,9 +48,34 @@ void print_score_table(std::ostream& out, const std::vector<PartResult>& results
     }
     for (const std::string& u : p.unassigned)
       out << "  (not scored: the test " << u << " names no step of part " << p.part << ")\n";
+    if (p.open_checks > 0) {
+      std::string parts;
+      for (size_t i = 0; i < p.failing_parts_run.size(); ++i)
+        parts += (i == 0 ? "" : i + 1 == p.failing_parts_run.size() ? " and " : ", ") +
+                 std::string("Part ") + std::to_string(p.failing_parts_run[i]);
+      out << "  On Gradescope, which grades Part " << p.part
+          << " with the course's own other parts: between " << points(p.score(), p.max_score())
+          << " and " << points(p.score() + p.open_points, p.max_score()) << " (" << p.open_checks
+          << " failing check" << (p.open_checks == 1 ? "" : "s") << " here ran your " << parts
+          << ", which fails).\n";
+    }
+    open += p.open_points;
+    alone = alone && p.graded_alone;
   }
   out << "\nTotal: " << points(total, max) << (all_passed(results) ? "  (every step passes)" : "")
       << "\n";
+  if (alone) {
+    out << "Graded as Gradescope grades it: each part with the course's own other parts.\n";
+  } else if (open > 0.0) {
+    out << "Gradescope grades each part with the course's own other parts, so its total is "
+           "between "
+        << points(total, max) << " and " << points(total + open, max)
+        << ": fix the earlier part that fails and grade again to know it.\n";
+  } else {
+    out << "Gradescope grades each part with the course's own other parts; no failing check here "
+           "ran a failing part of yours, so it gives this total (its renders are of scenes "
+           "varied for each submission: correct code passes both).\n";
+  }
 }
 
 namespace {

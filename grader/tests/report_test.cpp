@@ -69,6 +69,32 @@ TEST(GraderReport, AStepSharesItsPointsAmongItsCountedChecks) {
   EXPECT_NE(none.message.find("no check"), std::string::npos);
 }
 
+// Locally a part's renders run the student's own earlier parts; Gradescope runs the course's. The
+// table says which figure Gradescope gives, or the range it lies in and why.
+TEST(GraderReport, TheTableSaysWhatGradescopeGives) {
+  std::vector<PartResult> r = sample_results();
+  std::ostringstream same;
+  print_score_table(same, r);
+  EXPECT_NE(same.str().find("so it gives this total"), std::string::npos) << same.str();
+  r[0].open_checks = 1;
+  r[0].open_points = 2.0;
+  r[0].failing_parts_run = {2};
+  std::ostringstream range;
+  print_score_table(range, r);
+  EXPECT_NE(range.str().find("between 9/11 and 11/11 (1 failing check here ran your Part 2, "
+                             "which fails)"),
+            std::string::npos)
+      << range.str();
+  EXPECT_NE(range.str().find("its total is between 9/11 and 11/11"), std::string::npos)
+      << range.str();
+  r[0].graded_alone = true;
+  r[0].open_checks = 0;
+  r[0].open_points = 0.0;
+  std::ostringstream alone;
+  print_score_table(alone, r);
+  EXPECT_NE(alone.str().find("Graded as Gradescope grades it"), std::string::npos) << alone.str();
+}
+
 TEST(GraderReport, GradescopeJsonHasOneTestPerStep) {
   RunInfo info;
   info.seconds = 12.5;
