@@ -24,6 +24,7 @@
 #include "grader/compare.h"
 #include "grader/judged_tests.h"
 #include "grader/reference_mean.h"
+#include "grader/rules.h"
 #include "grader/scene_variant.h"
 #include "grader/step_at_fault.h"
 
@@ -286,6 +287,15 @@ StepResult score_step(const StepSpec& spec, std::vector<CheckResult> checks) {
     return r;
   }
   r.score = spec.points * double(counted - failed) / double(counted);
+  // A failing check says which of the step's rules it enforces: the rule the code breaks.
+  for (CheckResult& c : r.checks) {
+    if (c.skipped || c.pass) continue;
+    std::string broken;
+    for (const Rule* rule : rules_enforced_by(spec, c.name))
+      broken += "\nThe rule it checks, #" + rule->id + ": " + rule->text;
+    // Before the "not implemented" lines, which the step's message gives once, below.
+    c.output.insert(std::min(c.output.find("\n    "), c.output.size()), broken);
+  }
   std::set<std::string> todo_seen;
   std::string todo;
   for (const CheckResult& c : r.checks) {
@@ -516,6 +526,7 @@ PartResult grade_part(const Manifest& manifest, int part, const GradeOptions& op
   auto start = std::chrono::steady_clock::now();
   PartResult result;
   result.part = part;
+  result.graded_alone = options.isolated;
   const PartSpec* spec = manifest.find_part(part);
   if (!spec) {
     result.built = false;

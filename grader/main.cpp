@@ -19,6 +19,7 @@
 #include "grader/instructor_commands.h"
 #include "grader/manifest.h"
 #include "grader/report.h"
+#include "grader/rules.h"
 
 namespace fs = std::filesystem;
 using namespace pt::grader;
@@ -74,6 +75,12 @@ int main(int argc, char** argv) {
   std::string handout_dir;
   CLI::App* handout = app.add_subcommand("handout", "write the student handout to a new folder");
   handout->add_option("OUT_DIR", handout_dir, "the folder to create")->required();
+  bool check_rules = false;
+  CLI::App* rules = app.add_subcommand(
+      "rules", "print the rules each step states, with the checks that enforce them (and the "
+               "catalogued bugs that break them, where the catalogue is)");
+  rules->add_flag("--check", check_rules,
+                  "fail (exit 1) if a rule has no check this build has, or no catalogued bug");
   InstructorCommands instructor(app);  // mutants, false-failures, second-solution
   // The Gradescope bundle (grader/bundle/, docs/grading.md "The Gradescope bundle").
   std::string bundle_zip, autograde_root, autograde_parts;
@@ -179,6 +186,25 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     std::cerr << "grader: " << e.what() << "\n";
     return 2;
+  }
+  if (*rules) {
+    const fs::path index = fs::path(options.source_dir) / "grader" / "mutants" / "index.json";
+    try {
+      std::optional<std::vector<MutantSpec>> mutants;
+      if (fs::exists(index)) mutants = read_mutant_index(index.string());
+      print_rules(std::cout, manifest, mutants ? &*mutants : nullptr);
+      if (!check_rules) return 0;
+      const std::vector<std::string> problems =
+          rule_problems(manifest, mutants ? &*mutants : nullptr, listed_tests(options.build_dir));
+      for (const std::string& p : problems) std::cerr << "grader rules: " << p << "\n";
+      if (problems.empty())
+        std::cerr << "grader rules: every rule has a check" << (mutants ? " and a mutant" : "")
+                  << "\n";
+      return problems.empty() ? 0 : 1;
+    } catch (const std::exception& e) {
+      std::cerr << "grader rules: " << e.what() << "\n";
+      return 2;
+    }
   }
   if (make_reference && !has_solution(options.source_dir)) {
     std::cerr << "grader: --make-reference is the instructor's: it renders the references with "

@@ -193,6 +193,20 @@ Manifest read_manifest(const std::string& path) {
           else
             st.other_rule_renders.push_back(r);
         }
+        for (const auto& uj : optional(sj, "rules", nlohmann::ordered_json::array())) {
+          Rule rule;
+          rule.id = field<std::string>(path, sw + ", a rule", uj, "id");
+          const std::string uw = sw + ", rule \"" + rule.id + "\"";
+          if (rule.id.empty() || rule.id.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_") !=
+                                     std::string::npos)
+            bad(path, uw, "a rule's id is lower-case letters, digits and _");
+          for (const Rule& other : st.rules)
+            if (other.id == rule.id) bad(path, uw, "two rules of one id");
+          rule.text = field<std::string>(path, uw, uj, "rule");
+          rule.checks = optional(uj, "checks", std::vector<std::string>());
+          rule.mutants = optional(uj, "mutants", std::vector<std::string>());
+          st.rules.push_back(rule);
+        }
         p.steps.push_back(st);
       }
       if (p.steps.empty()) bad(path, where, "a part has at least one step");

@@ -49,6 +49,18 @@ struct RenderCheck {
   }
 };
 
+/// One rule a step states (in its STUDENT comment or its part page): what must hold, not how to
+/// code it; the checks that enforce it, and the catalogued bugs that break it alone.
+struct Rule {
+  std::string id;                       ///< "several_lights", unique in its step
+  std::string text;                     ///< "every light adds its own light: a sum over the lights"
+  std::vector<std::string> checks;      ///< test names (a parameterised test's name without /...) or renders
+  std::vector<std::string> mutants;     ///< grader/mutants/index.json names
+
+  /// "part3.step4.importance#several_lights"
+  std::string full_name(const std::string& step_full_name) const { return step_full_name + "#" + id; }
+};
+
 /// One step of a part: what the student writes in it, its points and its renders. Its tests
 /// are the CTest tests named `partN.stepK.*` (from parts/N-*/tests/stepK_NAME_test.cpp).
 struct StepSpec {
@@ -64,6 +76,7 @@ struct StepSpec {
   std::vector<int> tests_rest_on_steps;
   std::vector<RenderCheck> renders;     ///< graded under the manifest's stopping rule
   std::vector<RenderCheck> other_rule_renders;  ///< of the other stopping rule: not graded
+  std::vector<Rule> rules;              ///< what the handout says must hold (grader rules)
 
   std::string full_name() const;        ///< "part3.step4.importance"
   std::string test_prefix() const;      ///< "part3.step4."
