@@ -96,5 +96,25 @@ TEST(camera_ray, thin_lens_rays_converge_on_the_focal_plane) {
   EXPECT_GT(max_radius, 0.9f * cam.lens_radius);  // the aperture is used, not just its centre
 }
 
+// The lens point is uniform over the aperture's area: on a stratified grid of lens samples, the
+// mean of r^2 is R^2/2 (r = R*sqrt(u)); a radius uniform in [0, R] gives R^2/3, crowding the
+// centre.
+TEST(camera_ray, lens_points_are_uniform_over_the_aperture) {
+  Camera cam;
+  cam.lens_radius = 0.5f;
+  cam.focal_distance = 2.0f;
+  double mean_r2 = 0.0;
+  const int n = 32;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const Ray r = generate_camera_ray(cam, 1.0f, {0.4f, 0.6f}, {(i + 0.5f) / n, (j + 0.5f) / n});
+      mean_r2 += double(r.o.x) * r.o.x + double(r.o.y) * r.o.y;
+    }
+  mean_r2 /= double(n * n);
+  EXPECT_NEAR(mean_r2 / (0.25), 0.5, 0.01)
+      << "the mean squared distance of the lens points from the centre, over R^2: 1/2 for points "
+         "uniform over the disk's area";
+}
+
 }  // namespace
 }  // namespace pt

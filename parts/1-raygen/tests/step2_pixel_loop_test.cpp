@@ -102,6 +102,39 @@ TEST(pixel_loop, jittered_samples_stay_in_their_pixel) {
   EXPECT_GT(hi.y, y1 - 0.02f / 6);
 }
 
+// The order of the random numbers is part of the contract: for each sample its offset, then its
+// lens sample only when the camera has a lens, then whatever the sample's radiance draws. The same
+// seed then gives the same image in every renderer that keeps it (the viewer's pixel inspector,
+// a re-render of one tile). The expected rays come from the student's own
+// camera_ray_through_pixel, so only the loop's order is graded here.
+TEST(pixel_loop, draws_the_offset_then_the_lens_sample) {
+  for (const float lens_radius : {0.0f, 0.2f}) {
+    Camera cam;
+    cam.lens_radius = lens_radius;
+    cam.focal_distance = 3.0f;
+    const PixelRef px{3, 5, 16, 12};
+    std::vector<Ray> rays;
+    RadianceFn record = [&](const Ray& r, Rng& rng) {
+      rays.push_back(r);
+      rng.next_float();  // the sample's own draw, after the camera's
+      return glm::vec3(1.0f);
+    };
+    Rng rng(11), mine(11);
+    PixelStats stats;
+    estimate_pixel(cam, px, 8, rng, record, &stats);
+    ASSERT_EQ(rays.size(), 8u) << "lens radius " << lens_radius;
+    for (size_t i = 0; i < rays.size(); ++i) {
+      const glm::vec2 offset = mine.next_2d();
+      const glm::vec2 lens = lens_radius > 0.0f ? mine.next_2d() : glm::vec2(0.5f);
+      mine.next_float();
+      const Ray expect = camera_ray_through_pixel(cam, px, offset, lens);
+      EXPECT_EQ(rays[i].o, expect.o) << "sample " << i << ", lens radius " << lens_radius;
+      EXPECT_EQ(rays[i].d, expect.d) << "sample " << i << ", lens radius " << lens_radius
+                                     << ": not the offset, then the lens sample only with a lens";
+    }
+  }
+}
+
 TEST(pixel_loop, stats_hold_the_average_of_the_samples) {
   Camera cam;
   std::vector<glm::vec3> values;
