@@ -175,8 +175,10 @@ MutantOutcome judge_mutant(const MutantSpec& spec, const std::vector<StepLoss>& 
     for (const StepLoss& l : losses)
       if (&l != own && std::regex_match(l.step, kStepName))
         spent = spent && l.message.find(spec.step) != std::string::npos;
-    o.verdict = !elsewhere ? (true_hint ? "ok" : "hint?")
-                           : (spent && true_hint ? "OVERFLOW" : "ALSO ELSEWHERE");
+    o.verdict = elsewhere && !spent ? "ALSO ELSEWHERE"
+                : !true_hint            ? "hint?"
+                : elsewhere             ? "OVERFLOW"
+                                        : "ok";
   }
   return o;
 }

@@ -204,7 +204,12 @@ inline void check(const Case& c, Tally* tally, const char* kind, double min_t = 
                     << r.o.y << "," << r.o.z << ") d=(" << r.d.x << "," << r.d.y << "," << r.d.z
                     << ") p0=(" << c.p[0].x << "," << c.p[0].y << "," << c.p[0].z << ") p1=("
                     << c.p[1].x << "," << c.p[1].y << "," << c.p[1].z << ") p2=(" << c.p[2].x
-                    << "," << c.p[2].y << "," << c.p[2].z << ")";
+                    << "," << c.p[2].y << "," << c.p[2].z << ")"
+                    << (float_hit && !(fh.t > r.tmin && fh.t < r.tmax)
+                            ? ": the hit's t = " + std::to_string(fh.t) +
+                                  " lies outside the ray's interval (tmin, tmax) = (" +
+                                  std::to_string(r.tmin) + ", " + std::to_string(r.tmax) + ")"
+                            : std::string());
     return;
   }
   if (exact_hit) {
