@@ -1,5 +1,6 @@
 // A graded render's scene as no submission can know it in advance: the camera moved and turned a
-// little and the lights' colours changed, by amounts drawn for each submission. The reference is
+// little, the free objects moved and the lights' colours changed, by amounts drawn for each
+// submission. The reference is
 // rendered from the same variant at grading time, so an image made beforehand matches neither.
 #pragma once
 
@@ -14,8 +15,9 @@ struct SceneVariant {
 };
 
 /// Writes `scene` (a COLLADA file) to `out` with its camera moved by about 3% of its distance
-/// from the origin and turned by up to 2 degrees, and every light's colour scaled by a factor
-/// per channel in [0.75, 1.25], all drawn from `key`. Throws with the file's name on a scene it
+/// from the origin and turned by up to 2 degrees, every object that has room around it (not an
+/// emitter) moved by up to 2% of the scene's size without leaving the room, and every light's
+/// colour scaled by a factor per channel in [0.75, 1.25], all drawn from `key`. Throws with the file's name on a scene it
 /// cannot read or a camera it cannot find.
 SceneVariant write_scene_variant(const std::string& scene, uint64_t key, const std::string& out);
 
