@@ -33,13 +33,13 @@ bool intersect_box(const Bounds3& box, const BoxRay& ray, float tmax, float* t_e
   *t_entry = t0;
   return t0 <= t1;
   // END SOLUTION
-  // STUDENT: for each axis, the distances where the ray crosses the box's two planes
-  // ((lo - o) · inv_d and (hi - o) · inv_d), near/far chosen by the sign of inv_d
-  // (std::signbit, so that -0 counts as negative); scale the far one up by
-  // 1 + 2·gamma(3) and move the near one towards -inf by as much, so rounding never lets a ray
-  // slip past; keep the largest near and the smallest
-  // far, starting from ray.tmin and tmax (written so that a NaN leaves them unchanged). The ray
-  // meets the box when near <= far; *t_entry = near.
+  // STUDENT: return whether the ray meets the box at some distance in [ray.tmin, tmax], and on
+  // a hit set *t_entry to the distance at which it enters, or less: the traversal visits nearer
+  // boxes first by it and skips those that start beyond its best hit. What must hold (each is a
+  // check, docs/handout/part2.md step 1): a box the ray truly meets is never rejected because of
+  // rounding, and *t_entry is never beyond the true entry; a ray along a face, in a flat box or
+  // with a zero direction component counts where it touches the box; a box before tmin or beyond
+  // tmax, or well beside the ray, is missed.
   PT_STUDENT_TODO("part 2", "intersect_box");
   (void)box, (void)ray, (void)tmax;
   *t_entry = 0.0f;
