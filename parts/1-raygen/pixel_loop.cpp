@@ -15,9 +15,10 @@ Ray camera_ray_through_pixel(const Camera& camera, const PixelRef& px, glm::vec2
                        1.0f - (float(px.y) + offset.y) / float(px.height));
   return generate_camera_ray(camera, aspect, film, lens);
   // END SOLUTION
-  // STUDENT: turn the point of the pixel into film coordinates ((0,0) is the image's
-  // bottom-left corner, (1,1) its top-right; pixel rows count from the top) and return
-  // generate_camera_ray through it, for an image of aspect px.width / px.height.
+  // STUDENT: return the camera ray through the point `offset` of pixel `px` ((0,0) the pixel's
+  // top-left corner, (1,1) its bottom-right; rows count from the image's top), with `lens` as
+  // the lens sample. The film has (0,0) at the image's bottom-left, and the image's aspect is its
+  // width over its height. Checked: docs/handout/part1.md step 2.
   PT_STUDENT_TODO("part 1", "camera_ray_through_pixel");
   (void)camera, (void)px, (void)offset, (void)lens;
   return Ray{};
@@ -33,9 +34,11 @@ void estimate_pixel(const Camera& camera, const PixelRef& px, int samples, Rng& 
   }
   return;
   // END SOLUTION
-  // STUDENT: for each sample pick a point in the pixel (its centre when samples == 1, a uniform
-  // random point otherwise, rng.next_2d()), then a lens sample (rng.next_2d() when the camera has
-  // a lens), shoot camera_ray_through_pixel and add its radiance to *stats.
+  // STUDENT: add the radiance of `samples` camera rays through pixel `px` to *stats, one add per
+  // sample. What must hold (docs/handout/part1.md step 2): one sample goes through the pixel's
+  // centre and draws no offset; several go through uniform random points of the pixel; for each
+  // sample its offset is drawn first (rng.next_2d()), then its lens sample only when the camera
+  // has a lens, then whatever its radiance draws.
   PT_STUDENT_TODO("part 1", "estimate_pixel");
   (void)camera, (void)px, (void)samples, (void)rng, (void)radiance;
   stats->add(glm::vec3(0.0f));

@@ -42,9 +42,11 @@ bool intersect_sphere(const Ray& ray, const Sphere& sphere, float* t) {
   }
   return false;
   // END SOLUTION
-  // STUDENT: solve |o + t d - c|^2 = r^2 for t. Compute the discriminant from the distance of the
-  // ray to the centre (not b^2 - 4ac, which cancels), take q = -(b + sign(b) sqrt(disc)) / 2 and
-  // the roots q/a and c/q, and return the nearer root inside (tmin, tmax).
+  // STUDENT: set *t to the nearest t with tmin < t < tmax at which the ray meets the sphere's
+  // surface and return true, else return false. Both roots count (a ray from inside hits the far
+  // side), and the direction need not be unit length. The roots must agree with exact arithmetic
+  // within a small relative error for far spheres, near-tangent rays and origins on the surface,
+  // where the school formula loses its digits (docs/handout/part1.md step 4 says where to read).
   PT_STUDENT_TODO("part 1", "intersect_sphere");
   (void)ray, (void)sphere, (void)t;
   return false;

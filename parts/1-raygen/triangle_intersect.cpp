@@ -82,14 +82,14 @@ bool intersect_triangle(const Ray& ray, const glm::vec3& p0, const glm::vec3& p1
   hit->b2 = e2 * inv_det;
   return true;
   // END SOLUTION
-  // STUDENT: move the ray origin to (0,0,0) and shear the triangle so that the ray runs along +z,
-  // compute the three edge functions in 2D (recomputing them in double when one is exactly
-  // zero), reject on mixed signs or a zero determinant, and only then divide to get t and the
-  // barycentric coordinates. Check tmin < t < tmax before filling *hit.
-  // Step 5 (watertight) holds the same function to three more rules: a ray through a shared edge
-  // or vertex hits one of the two triangles; a hit counts only where t exceeds its own rounding
-  // error bound (pbrt-v4, 6.8.7), so a ray cannot hit the triangle it leaves; and no fixed
-  // epsilon, on the determinant or on t (grazing rays, tiny triangles, hits at t = 1e-6 are hits).
+  // STUDENT: return whether the ray meets the triangle (p0, p1, p2) at some tmin < t < tmax, from
+  // either side, and on a hit fill *hit with t and the barycentric coordinates (b0 is p0's
+  // weight; the three add up to 1). A triangle with two equal corners is never hit. Step 3 checks
+  // the answers against exact arithmetic. Step 5 (watertight) holds the same function to three
+  // more rules: a ray through a shared edge or vertex hits one of the triangles; a hit counts only
+  // where t exceeds its own rounding error bound, so a ray cannot hit the triangle it leaves; and
+  // no fixed epsilon, on the determinant or on t (grazing rays, tiny triangles, hits at t = 1e-6
+  // are hits). docs/handout/part1.md explains why and where to read.
   PT_STUDENT_TODO("part 1", "intersect_triangle");
   (void)ray, (void)p0, (void)p1, (void)p2, (void)hit;
   return false;
@@ -100,7 +100,8 @@ glm::vec3 interpolate_normal(const TriangleHit& hit, const glm::vec3& n0, const 
   // BEGIN SOLUTION
   return glm::normalize(hit.b0 * n0 + hit.b1 * n1 + hit.b2 * n2);
   // END SOLUTION
-  // STUDENT: weigh each corner normal by its barycentric coordinate and normalise the sum.
+  // STUDENT: return the unit shading normal at the hit: the corners' normals weighted by the hit's
+  // barycentric coordinates (n0 by b0).
   PT_STUDENT_TODO("part 1", "interpolate_normal");
   (void)hit, (void)n1, (void)n2;
   return n0;

@@ -48,12 +48,12 @@ void Bvh::traverse_nearest(NearestState* state) const {
   }
   return;
   // END SOLUTION
-  // STUDENT: keep a stack of nodes to visit, each with the distance at which the ray enters it.
-  // Start with the root if intersect_box(root.bounds, st.box, st.cull.tmax, ...) says so. Pop
-  // a node (skip it if it starts beyond st.cull.tmax, which shrinks as hits are found); at a leaf
-  // call intersect_leaf(node, &st); at an interior node test both children (the first is
-  // index + 1, the second node.offset) and go into the nearer one, pushing the other.
-  // intersect() turns the best hit intersect_leaf kept into a SurfaceHit afterwards.
+  // STUDENT: walk the tree so that every leaf that may hold a hit nearer than the best so far goes
+  // through intersect_leaf(node, &st), which keeps the best hit and shrinks st.cull.tmax; use
+  // st.cull.tmax as the far end of your box tests. What must hold (docs/handout/part2.md step
+  // 3): brute force's nearest hit on every tree, including ones dozens of levels deep; and few
+  // primitive tests per ray, as a walk that opens nearer boxes first and none that start beyond
+  // st.cull.tmax makes. intersect() turns the best hit into a SurfaceHit afterwards.
   PT_STUDENT_TODO("part 2", "Bvh::traverse_nearest");
   (void)st;  // no hit: the tree finds nothing until you write its walk
 }
@@ -79,8 +79,8 @@ bool Bvh::occluded(const Ray& ray) const {
   }
   return false;
   // END SOLUTION
-  // STUDENT: the same walk as intersect, but return true at the first leaf where
-  // leaf_occludes(node, ray) says so; no nearest-first order or distances are needed.
+  // STUDENT: return whether anything lies on the ray within its interval (leaf_occludes(node,
+  // ray) tests a leaf's primitives); any occluder will do, found in any order.
   PT_STUDENT_TODO("part 2", "Bvh::occluded");
   (void)box;
   return false;
