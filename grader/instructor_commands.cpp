@@ -78,8 +78,12 @@ int InstructorCommands::run(const GradeOptions& grade, const std::string& grader
       print_mutant_table(std::cout, outcomes, elapsed());
       std::ofstream table(fs::path(o.work_dir) / "table.txt");
       print_mutant_table(table, outcomes, elapsed());
+      // Per rule, from the manifest the copies were graded with.
+      const Manifest manifest = read_manifest(grade.manifest_path);
+      print_rule_table(std::cout, manifest, outcomes);
+      print_rule_table(table, manifest, outcomes);
       for (const MutantOutcome& m : outcomes)
-        if (m.verdict != "ok") return 1;
+        if (m.verdict != "ok" && m.verdict != "OVERFLOW") return 1;
       return 0;
     }
     std::string work = work_.empty() ? (fs::path(grade.build_dir) / "false-failures").string() : work_;

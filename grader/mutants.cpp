@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -291,6 +292,32 @@ std::vector<MutantOutcome> run_mutants(const MutantRunOptions& options, std::ost
   for (int k = 0; k < jobs; ++k) threads.emplace_back(worker, k);
   for (std::thread& t : threads) t.join();
   return outcomes;
+}
+
+void print_rule_table(std::ostream& out, const Manifest& manifest,
+                      const std::vector<MutantOutcome>& outcomes) {
+  out << "\nrule                                                  mutant                          "
+         "verdict         names the rule\n";
+  int rules = 0, broken = 0;
+  for (const PartSpec& part : manifest.parts)
+    for (const StepSpec& step : part.steps)
+      for (const Rule& rule : step.rules) {
+        const std::string name = rule.full_name(step.full_name());
+        bool any = false;
+        for (const std::string& m : rule.mutants)
+          for (const MutantOutcome& o : outcomes) {
+            if (o.spec.name != m) continue;
+            any = true;
+            const bool named = o.message.find("#" + rule.id + ":") != std::string::npos;
+            char line[400];
+            std::snprintf(line, sizeof line, "%-53s %-31s %-15s %s\n", name.c_str(), m.c_str(),
+                          o.verdict.c_str(), named ? "yes" : "no");
+            out << line;
+          }
+        ++rules;
+        broken += any ? 1 : 0;
+      }
+  out << broken << " of " << rules << " rules broken by a mutant of this run\n";
 }
 
 void print_mutant_table(std::ostream& out, const std::vector<MutantOutcome>& outcomes,

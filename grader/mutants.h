@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "grader/manifest.h"
+
 namespace pt::grader {
 
 /// One catalogued bug: its patch and what grading it must show.
@@ -71,6 +73,11 @@ struct MutantRunOptions {
 
 /// Runs the catalogue; prints progress to `log` and returns each mutant's outcome in index order.
 std::vector<MutantOutcome> run_mutants(const MutantRunOptions& options, std::ostream& log);
+
+/// Per rule of the manifest: each mutant that breaks it, its verdict, and whether its step's
+/// message names the rule (its `#id`), so a hint is seen to name the rule the code broke.
+void print_rule_table(std::ostream& out, const Manifest& manifest,
+                      const std::vector<MutantOutcome>& outcomes);
 
 /// The table: mutant, the step it must lose in, where it lost (points), verdict, message.
 void print_mutant_table(std::ostream& out, const std::vector<MutantOutcome>& outcomes,

@@ -144,6 +144,35 @@ TEST(MutantVerdict, ABugWorthMoreThanItsStepIsAnOverflowNotOk) {
   EXPECT_EQ(judge_mutant(s, step_losses(results)).verdict, "ALSO ELSEWHERE");
 }
 
+// Per rule: each mutant's verdict and whether its step's message names the rule it breaks.
+TEST(MutantVerdict, TheRuleTableSaysWhetherTheHintNamesTheRule) {
+  Manifest m;
+  PartSpec p;
+  p.part = 3;
+  StepSpec s;
+  s.part = 3;
+  s.step = 4;
+  s.name = "importance";
+  s.rules = {{"several_lights", "every light adds its light", {}, {"28-x", "29-y"}},
+             {"unbroken", "nothing breaks it", {}, {}}};
+  p.steps.push_back(s);
+  m.parts.push_back(p);
+  MutantOutcome named, unnamed;
+  named.spec.name = "28-x";
+  named.verdict = "ok";
+  named.message = "x: 0.333x\nThe rule it checks, #several_lights: every light adds its light";
+  unnamed.spec.name = "29-y";
+  unnamed.verdict = "hint?";
+  unnamed.message = "x: failed";
+  std::ostringstream out;
+  print_rule_table(out, m, {named, unnamed});
+  const std::string t = out.str();
+  EXPECT_NE(t.find("part3.step4.importance#several_lights"), std::string::npos) << t;
+  EXPECT_NE(t.find("28-x                            ok              yes"), std::string::npos) << t;
+  EXPECT_NE(t.find("29-y                            hint?           no"), std::string::npos) << t;
+  EXPECT_NE(t.find("1 of 2 rules broken by a mutant of this run"), std::string::npos) << t;
+}
+
 TEST(MutantVerdict, PerCheckResultsGiveEachFailingTestsShareToItsStep) {
   json results = {{"tests",
                    {{{"name", "part3.build"}, {"score", 0}, {"max_score", 0}, {"output", "built"}},
