@@ -222,14 +222,21 @@ std::vector<JudgedTest> list_judged_tests(int part, const std::string& probe_bui
 
 std::vector<JudgedOutcome> run_judged_tests(const std::vector<JudgedTest>& tests,
                                             const Sandbox& sandbox, double wall_seconds,
-                                            const std::string& work_dir) {
+                                            const std::string& work_dir,
+                                            const std::vector<double>& expected_seconds) {
   std::vector<JudgedOutcome> results(tests.size());
   const int lanes = std::max(1, std::min<int>(sandbox.jobs, int(tests.size())));
+  std::vector<size_t> order(tests.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  if (expected_seconds.size() == tests.size())
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+      return expected_seconds[a] > expected_seconds[b];
+    });
   std::atomic<size_t> next{0};
   auto lane_work = [&](int k) {
     Sandbox mine = sandbox.protects() ? sandbox.lane(k) : sandbox;
-    for (size_t i; (i = next++) < tests.size();)
-      results[i] = run_one(tests[i], mine, wall_seconds, work_dir);
+    for (size_t n; (n = next++) < tests.size();)
+      results[order[n]] = run_one(tests[order[n]], mine, wall_seconds, work_dir);
   };
   if (lanes == 1) {
     lane_work(0);

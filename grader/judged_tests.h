@@ -42,8 +42,11 @@ struct JudgedOutcome {
 /// Runs every test of `tests`, each probe then judge, up to sandbox.jobs at once (each lane a
 /// uid of its own), outcomes in the order of `tests`. A probe stopped for the disk while others
 /// ran beside it runs again alone. `work_dir` is the grader's own folder for the records.
+/// `expected_seconds` (empty, or one per test: what each took last time) starts the longest
+/// first, so that no lane is left with a long test at the end while the others wait.
 std::vector<JudgedOutcome> run_judged_tests(const std::vector<JudgedTest>& tests,
                                             const Sandbox& sandbox, double wall_seconds,
-                                            const std::string& work_dir);
+                                            const std::string& work_dir,
+                                            const std::vector<double>& expected_seconds = {});
 
 }  // namespace pt::grader

@@ -65,6 +65,23 @@ TEST(GraderJudgedTests, TheSolutionsProbePassesItsJudge) {
   EXPECT_TRUE(o.pass) << o.message << "\n" << o.student_output;
 }
 
+// The longest tests start first when their times are known; each outcome stays with its test.
+TEST(GraderJudgedTests, OutcomesKeepTheirTestsWhateverOrderTheyRunIn) {
+  test::TempFolder dir("pt-judged");
+  const JudgedTest good = camera_test(kSecret + "/probe_part1_step1_camera_ray_test");
+  const JudgedTest silent = camera_test(script(dir, "silent", "exit 0"));
+  Sandbox sandbox = Sandbox::standard((dir.path() / "scratch").string(), own_slot());
+  for (const std::vector<double>& expected :
+       {std::vector<double>{}, std::vector<double>{0.1, 5.0, 0.2}, std::vector<double>{9, 1, 3}}) {
+    const std::vector<JudgedOutcome> o = run_judged_tests(
+        {good, silent, good}, sandbox, 60.0, (dir.path() / "records").string(), expected);
+    ASSERT_EQ(o.size(), 3u);
+    EXPECT_TRUE(o[0].pass) << o[0].message;
+    EXPECT_FALSE(o[1].pass);
+    EXPECT_TRUE(o[2].pass) << o[2].message;
+  }
+}
+
 TEST(GraderJudgedTests, AProbeThatAnswersNothingFails) {
   test::TempFolder dir("pt-judged");
   JudgedOutcome o = run(camera_test(script(dir, "silent", "exit 0")), dir);
