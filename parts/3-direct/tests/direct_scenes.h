@@ -44,7 +44,9 @@ inline std::string estimator_hint(bool hemisphere, int n, double mean, double ex
   if (hemisphere)
     return ratio_hint(mean, expected,
                       {{1.0 / (2.0 * M_PI), "each direction's f·L·cosθ not divided by its density 1/(2π)?"},
-                       {0.5, "a factor 2 lost: a uniform hemisphere direction's density is 1/(2π), not 1/π?"},
+                       {0.5, "a factor 2 lost: a uniform hemisphere direction's density is 1/(2π), not 1/π? Or half the "
+                             "rays sent into the surface: a local direction used as a world one "
+                             "(sp.frame.to_world)?"},
                        {2.0, "twice: divided by 1/(4π), the whole sphere's density, not the hemisphere's 1/(2π)?"},
                        {dn, "the samples summed, not averaged?"}});
   return ratio_hint(mean, expected,
