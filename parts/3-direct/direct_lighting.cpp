@@ -68,13 +68,21 @@ glm::vec3 estimate_direct_importance(const LightingContext& ctx, const ShadingPo
   }
   return L;
   // END SOLUTION
-  // STUDENT: for each light k of ctx.lights.lights(): take n = 1 sample if it is_delta(), else
-  // ctx.light_samples. For each, ls = ctx.lights.sample(k, sp.hit, rng.next_2d()); skip it if
-  // ls.pdf is 0 or wi = sp.frame.to_local(ls.wi) is below the surface; if
-  // ctx.lights.unoccluded(ctx.query, spawn_shadow_ray(sp.hit, ls), k), add f·ls.L·cosθ/ls.pdf.
-  // Trace no shadow ray for a sample whose f or ls.L is zero (it can add nothing), and start
-  // every shadow ray with spawn_shadow_ray (a fixed epsilon of your own leaks light or makes
-  // acne). Average each light's samples, sum over lights.
+  // STUDENT: the direct light reflected at sp towards sp.wo, estimated by sampling the lights
+  // (docs/handout/part3.md, step 4, has the idea and the maths).
+  // In: sp (its hit, local frame, wo and BSDF); ctx.lights (what each light is and its samples,
+  // light_set.h), ctx.query (for visibility), ctx.light_samples (-l); rng, the only source of
+  // random numbers. Out: radiance per channel, finite and >= 0, whose expectation is the
+  // direct-lighting integral at sp.
+  // What must hold, and is graded:
+  // - every light adds its own light: the result is a sum over ctx.lights.lights() of each
+  //   light's estimate, and a light's estimate is the mean of its own samples;
+  // - an area light takes exactly ctx.light_samples samples, a delta light exactly one, whatever
+  //   -l says; a sample's density is the one the LightSet gives it (per solid angle at sp);
+  // - a sample adds light only from above the surface, with a density above zero, and only when
+  //   nothing blocks it: one shadow ray per sample, made by spawn_shadow_ray (no offset of your
+  //   own), and none for a sample that can add nothing (f or its radiance zero);
+  // - directions are in the frame each quantity needs (f and cosθ in sp's local frame).
   PT_STUDENT_TODO("part 3", "estimate_direct_importance");
   (void)ctx, (void)sp, (void)rng;
   return glm::vec3(0.0f);

@@ -47,11 +47,24 @@ glm::vec3 at_least_one_bounce_radiance(const LightingContext& ctx, const Shading
   }
   return L + weight * Li / q;
   // END SOLUTION
-  // STUDENT: add direct_radiance(ctx, sp, rng) (if this bounce is wanted). Unless depth has
-  // reached ctx.max_depth, sample the BSDF (sp.bsdf->sample_f), weight = f·|cosθ|/pdf; from the
-  // second bounce on, continue only with probability q (Russian roulette) and divide by q. Trace
-  // spawn_ray(sp.hit, world direction); at its hit add at_least_one_bounce_radiance of the next
-  // ShadingPoint at depth + 1 (and its emission if sp is specular), times the weight.
+  // STUDENT: the light leaving sp towards sp.wo after at least one bounce, sp being vertex
+  // number `depth` of the path (the camera ray's hit is 1); docs/handout/part4.md has the idea.
+  // In: sp, depth, ctx (max_depth -m, only_bounce --bounce, russian_roulette, mis, the lights and
+  // the query); rng, the only source of random numbers. Out: radiance per channel, finite and
+  // >= 0, whose expectation is the light of every path from sp of at most ctx.max_depth bounces
+  // in all (with ctx.only_bounce = K >= 0: of exactly K bounces), each path counted once.
+  // What must hold, and is graded:
+  // - the light arriving at a vertex straight from the lights is direct_radiance's (given); after
+  //   a diffuse vertex, an emitter the path meets adds nothing (that vertex's direct light counted
+  //   it), after a specular one its emission, or the environment's, counts;
+  // - a path goes on by one direction drawn from sp's BSDF, a ray made by spawn_ray, and what it
+  //   brings back is weighted so that the expectation is right (glass sends light below the
+  //   surface);
+  // - step 3: with ctx.russian_roulette, a path may end at random from the second bounce on,
+  //   never at the first, with a chance of going on that is above zero and below one at least
+  //   sometimes, and the expectation stays what it is without roulette; without it no path ends
+  //   before ctx.max_depth. Step 2's checks run with roulette off, step 3's compare your estimate
+  //   with and without it.
   PT_STUDENT_TODO("part 4", "at_least_one_bounce_radiance");
   (void)ctx, (void)sp, (void)depth, (void)rng;
   return glm::vec3(0.0f);

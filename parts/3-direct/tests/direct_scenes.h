@@ -44,13 +44,23 @@ inline std::string estimator_hint(bool hemisphere, int n, double mean, double ex
   if (hemisphere)
     return ratio_hint(mean, expected,
                       {{1.0 / (2.0 * M_PI), "each direction's f·L·cosθ not divided by its density 1/(2π)?"},
-                       {0.5, "a factor 2 lost: a uniform hemisphere direction's density is 1/(2π), not 1/π?"},
+                       {0.5, "a factor 2 lost: a uniform hemisphere direction's density is 1/(2π), not 1/π? Or half the "
+                             "rays sent into the surface: a local direction used as a world one "
+                             "(sp.frame.to_world)?"},
                        {2.0, "twice: divided by 1/(4π), the whole sphere's density, not the hemisphere's 1/(2π)?"},
                        {dn, "the samples summed, not averaged?"}});
   return ratio_hint(mean, expected,
                     {{dn, "each light's samples summed, not averaged?"},
                      {1.0 / dn, "each light's sum divided by the sample count twice?"},
                      {M_PI, "π times: the sample's f·L·cosθ without the BSDF's 1/π, or a density off by π?"}});
+}
+
+/// What an estimate of exactly zero under an open sky means.
+inline std::string sky_unseen_hint(bool hemisphere) {
+  return hemisphere ? ": no light at all under an open sky: does a direction that escapes see the "
+                      "environment (ctx.lights.environment_radiance)?"
+                    : ": no light at all under an open sky: is the environment light sampled like "
+                      "any other light of ctx.lights?";
 }
 
 /// A diffuse unit sphere of albedo rho at the origin under a uniform sky of radiance L.
@@ -117,8 +127,10 @@ inline void expect_sphere_under_sky_is_rho_times_l(bool hemisphere) {
   rig.ctx.light_samples = 4;
   auto xs = sample_values(direct_estimator(rig, hemisphere), ray_at_unit_sphere, 20000, 11);
   auto c = t_test_mean(xs, rho * L, kDirectAlpha);
-  EXPECT_TRUE(c.pass) << "mean " << c.mean << " ± " << c.stderr_ << ", expected " << rho * L
-                      << estimator_hint(hemisphere, 4, c.mean, rho * L);
+  EXPECT_TRUE(c.pass) << "a sphere under a uniform sky: mean " << c.mean << " ± " << c.stderr_
+                      << ", expected " << rho * L
+                      << (c.mean == 0.0 ? sky_unseen_hint(hemisphere)
+                                        : estimator_hint(hemisphere, 4, c.mean, rho * L));
 }
 
 /// A diffuse plane facing a uniform sky, seen from above: ρL as well (it sees only sky), by
@@ -128,8 +140,48 @@ inline void expect_plane_under_sky_is_rho_times_l(bool hemisphere) {
   rig.ctx.light_samples = 2;
   auto xs = sample_values(direct_estimator(rig, hemisphere), ray_at_plane, 20000, 5);
   auto c = t_test_mean(xs, 0.3 * 1.5, kDirectAlpha);
-  EXPECT_TRUE(c.pass) << "mean " << c.mean << " ± " << c.stderr_ << ", expected 0.45"
-                      << estimator_hint(hemisphere, 2, c.mean, 0.45);
+  EXPECT_TRUE(c.pass) << "a plane under a uniform sky: mean " << c.mean << " ± " << c.stderr_
+                      << ", expected 0.45"
+                      << (c.mean == 0.0 ? sky_unseen_hint(hemisphere)
+                                        : estimator_hint(hemisphere, 2, c.mean, 0.45));
+}
+
+/// A diffuse plane of albedo 0.3 seen from below, its underside facing a uniform sky of radiance
+/// 1.5, with a black plane half a unit above it: the point sees only sky through the hemisphere
+/// on the viewer's side (its shading normal points down, -z in the world), ρL again. Directions
+/// left in the shading frame (local z taken as world z) go up into the black plane: nothing.
+inline Scene plane_seen_from_below() {
+  Scene s;
+  const uint32_t grey = add_material(s, glm::vec3(0.3f));
+  const uint32_t black = add_material(s, glm::vec3(0.0f));
+  add_quad(s, {-5, -5, 0}, {5, -5, 0}, {5, 5, 0}, {-5, 5, 0}, grey);
+  add_quad(s, {-50, -50, 0.5f}, {50, -50, 0.5f}, {50, 50, 0.5f}, {-50, 50, 0.5f}, black);
+  s.lights.push_back(ambient_light(glm::vec3(1.5f)));
+  return s;
+}
+
+/// The plane of plane_seen_from_below from below: ρL (0.45), by hemisphere or light sampling,
+/// within chance. The shading frame's z is the world's -z here, so a direction used in the wrong
+/// frame (local for world, or world for local) meets the black plane instead of the sky.
+inline void expect_plane_seen_from_below_is_rho_times_l(bool hemisphere) {
+  Rig rig(plane_seen_from_below());
+  rig.ctx.light_samples = 2;
+  auto xs = sample_values(
+      direct_estimator(rig, hemisphere),
+      [](Rng& g) {
+        Ray r;
+        r.o = glm::vec3(g.next_float() - 0.5f, g.next_float() - 0.5f, -1.0f);
+        r.d = glm::normalize(glm::vec3(0.1f, -0.2f, 1.0f));
+        return r;
+      },
+      20000, 6);
+  auto c = t_test_mean(xs, 0.3 * 1.5, kDirectAlpha);
+  EXPECT_TRUE(c.pass) << "the underside of a plane (shading normal -z in the world) under a uniform "
+                      << "sky: mean " << c.mean << " ± " << c.stderr_ << ", expected 0.45"
+                      << (c.mean < 0.05 ? ": next to nothing: a direction used in the wrong frame "
+                                          "(sp.frame.to_world for a ray, sp.frame.to_local for "
+                                          "f and cosθ)?"
+                                        : estimator_hint(hemisphere, 2, c.mean, 0.45));
 }
 
 /// The sum of 64 estimates at the point of the ceiling over the panel, seen from below, by

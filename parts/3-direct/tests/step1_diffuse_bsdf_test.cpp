@@ -56,5 +56,35 @@ TEST(diffuse_bsdf, sample_f_returns_f_draws_its_pdf_and_the_weight_averages_to_t
   EXPECT_NEAR(sum.y / n, 0.25, 1e-4) << what << ": " << sum.y / n << " for albedo 0.25";
 }
 
+
+// f itself, per channel, at directions all over the sphere: albedo/π for every wi above the
+// surface (wi.z > 0), whatever wo, and exactly zero below it (wi.z < 0), where a surface lit from
+// behind must reflect nothing. sample_f only draws directions above, so its checks cannot see f
+// below the surface.
+TEST(diffuse_bsdf, f_is_albedo_over_pi_above_the_surface_and_zero_below) {
+  const glm::vec3 albedo(0.5f, 0.25f, 1.0f);
+  DiffuseBsdf bsdf(albedo);
+  const glm::vec3 wos[] = {glm::normalize(glm::vec3(0.3f, -0.2f, 0.8f)), glm::vec3(0, 0, 1)};
+  const glm::vec3 wis[] = {glm::vec3(0, 0, 1), glm::normalize(glm::vec3(0.6f, 0.3f, 0.2f)),
+                           glm::normalize(glm::vec3(-0.9f, 0.1f, 0.05f)), glm::vec3(0, 0, -1),
+                           glm::normalize(glm::vec3(0.4f, -0.5f, -0.3f)),
+                           glm::normalize(glm::vec3(-0.2f, 0.7f, -0.9f))};
+  for (const glm::vec3& wo : wos)
+    for (const glm::vec3& wi : wis) {
+      const glm::vec3 f = bsdf.f(wo, wi);
+      const glm::vec3 want = wi.z > 0.0f ? albedo * float(1.0 / M_PI) : glm::vec3(0.0f);
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(f[c], want[c], 1e-6f)
+            << "f(wo, wi) channel " << c << " for wi = (" << wi.x << ", " << wi.y << ", " << wi.z
+            << "), " << (wi.z > 0.0f ? "above" : "below") << " the surface, albedo " << albedo[c]
+            << ": got " << f[c] << ", want " << want[c]
+            << (wi.z > 0.0f ? test::ratio_hint(f[c], want[c],
+                                               {{0.5, "albedo/(2π), not albedo/π?"},
+                                                {M_PI, "the albedo itself, without the 1/π?"}})
+                            : std::string(": a Lambertian surface reflects nothing for a wi below "
+                                          "it (wi.z <= 0): f must be zero there"));
+    }
+}
+
 }  // namespace
 }  // namespace pt

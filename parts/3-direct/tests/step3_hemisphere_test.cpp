@@ -19,6 +19,12 @@ TEST(hemisphere, plane_under_uniform_sky_is_rho_times_l) {
   test::expect_plane_under_sky_is_rho_times_l(true);
 }
 
+// The same plane seen from below, where the shading frame's z is the world's -z: directions must
+// go between the frames (a ray needs world space, f and cosθ the local frame).
+TEST(hemisphere, plane_seen_from_below_is_rho_times_l) {
+  test::expect_plane_seen_from_below_is_rho_times_l(true);
+}
+
 // Most hemisphere directions from the ceiling's point meet the panel's back 1 cm below: they
 // must bring nothing, exactly as light sampling (which sees the light from behind) says.
 TEST(hemisphere, ceiling_over_a_panel_is_dark) {

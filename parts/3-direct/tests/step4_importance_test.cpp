@@ -20,6 +20,12 @@ TEST(importance, plane_under_uniform_sky_is_rho_times_l) {
   test::expect_plane_under_sky_is_rho_times_l(false);
 }
 
+// The same plane seen from below, where the shading frame's z is the world's -z: directions must
+// go between the frames (a ray needs world space, f and cosθ the local frame).
+TEST(importance, plane_seen_from_below_is_rho_times_l) {
+  test::expect_plane_seen_from_below_is_rho_times_l(false);
+}
+
 // The ceiling over a panel sees the light from behind: no light sample reaches it.
 TEST(importance, ceiling_over_a_panel_is_dark) {
   EXPECT_EQ(test::ceiling_over_panel_light(false), glm::vec3(0.0f));

@@ -103,6 +103,7 @@ inline glm::vec3 panel_in_a_mirror(bool hemisphere, bool mis) {
   rig.ctx.hemisphere = hemisphere;
   rig.ctx.mis = mis;
   rig.ctx.max_depth = 1;
+  rig.ctx.russian_roulette = false;  // step 3's: an exact value needs none of its noise
   Ray r;
   r.o = glm::vec3(0.1f, 0.05f, 0.2f);
   r.d = glm::normalize(glm::vec3(0.05f, 0.02f, -1.0f));

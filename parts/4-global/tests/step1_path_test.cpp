@@ -61,5 +61,34 @@ TEST(path, adds_the_emission_seen_to_the_bounces_at_the_hit) {
   }
 }
 
+// A camera ray that meets nothing sees the environment in its direction, at every depth, and
+// only as the light that took no bounce (--bounce 0, or every bounce).
+TEST(path, a_ray_that_escapes_sees_the_environment) {
+  Scene s;
+  const uint32_t m = test::add_material(s, glm::vec3(0.5f));
+  s.spheres.push_back(Sphere{glm::vec3(0.0f), 1.0f, m});
+  s.lights.push_back(test::ambient_light(glm::vec3(0.7f, 1.3f, 2.1f)));
+  test::Rig rig(s);
+  rig.ctx.russian_roulette = false;
+  Ray away;
+  away.o = glm::vec3(0.0f, 0.0f, 3.0f);
+  away.d = glm::normalize(glm::vec3(0.2f, 0.1f, 1.0f));
+  for (int only : {-1, 0, 2})
+    for (int depth : {0, 1, 4}) {
+      rig.ctx.max_depth = depth;
+      rig.ctx.only_bounce = only;
+      Rng rng(2);
+      const glm::vec3 L = estimate_global_illumination(rig.ctx, away, rng);
+      const glm::vec3 want = only <= 0 ? glm::vec3(0.7f, 1.3f, 2.1f) : glm::vec3(0.0f);
+      EXPECT_TRUE(L == want) << "-m " << depth
+                             << (only >= 0 ? ", --bounce " + std::to_string(only) : std::string())
+                             << ": a camera ray that hits nothing gave (" << L.x << ", " << L.y
+                             << ", " << L.z << "), not (" << want.x << ", " << want.y << ", "
+                             << want.z << "): an escaping ray sees the environment's radiance "
+                             << "in its direction (ctx.lights.environment_radiance), light that "
+                             << "took no bounce";
+    }
+}
+
 }  // namespace
 }  // namespace pt

@@ -200,6 +200,19 @@ TEST(bounces, no_nan_with_degenerate_shading_normals) {
   expect_all_finite(s, ray_at_floor);
 }
 
+// A path that reaches an emitter panel (CGL's emission material: a black BSDF, which has no
+// direction to sample, density zero) ends there: no division by that density.
+TEST(bounces, no_nan_where_paths_meet_an_emitter_panel) {
+  expect_all_finite(test::disagreeing_panel_scene(), [](Rng& g) {
+    Ray r;  // from between floor and panel, in every direction: at the floor, the panel, or out
+    r.o = glm::vec3(0.0f, 0.0f, 0.5f * test::DisagreeingPanel::kHeight);
+    const float z = 2.0f * g.next_float() - 1.0f, phi = 2.0f * float(M_PI) * g.next_float();
+    const float s = std::sqrt(std::max(0.0f, 1.0f - z * z));
+    r.d = glm::vec3(s * std::cos(phi), s * std::sin(phi), z);
+    return r;
+  });
+}
+
 // The hit itself may carry a broken normal (a loader's zero normal, a NaN from a degenerate
 // triangle): the shading point falls back to a usable frame and the estimate stays finite.
 TEST(bounces, shading_point_repairs_broken_normals) {
