@@ -313,6 +313,67 @@ bool same_pixels(const pt::Image& a, const pt::Image& b) {
   return true;
 }
 
+// A floor under a CGL area light (0.6 × 0.8, z = 1, shining down) whose emissive panel is
+// 0.8 × 0.6: the course's Cornell boxes' light, in miniature.
+const char* kPanelUnlikeItsLight = R"(<?xml version="1.0"?>
+<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
+  <asset><up_axis>Z_UP</up_axis></asset>
+  <library_lights><light id="lamp" name="Lamp"><technique_common><point><color>5 5 5</color></point></technique_common>
+    <extra><technique profile="CGL"><area><color>5 5 5</color></area></technique></extra></light></library_lights>
+  <library_effects>
+    <effect id="glow-fx"><profile_COMMON><technique sid="common"><phong><diffuse><color>0.8 0.8 0.8 1</color></diffuse></phong></technique></profile_COMMON>
+      <extra><technique profile="CGL"><emission><radiance>5 5 5</radiance></emission></technique></extra></effect>
+    <effect id="grey-fx"><profile_COMMON><technique sid="common"><phong><diffuse><color>0.5 0.5 0.5 1</color></diffuse></phong></technique></profile_COMMON></effect>
+  </library_effects>
+  <library_materials><material id="glow" name="glow"><instance_effect url="#glow-fx"/></material>
+    <material id="grey" name="grey"><instance_effect url="#grey-fx"/></material></library_materials>
+  <library_geometries>
+    <geometry id="panel"><mesh>
+      <source id="panel-p"><float_array id="panel-pa" count="12">-0.4 -0.3 1 0.4 -0.3 1 0.4 0.3 1 -0.4 0.3 1</float_array>
+        <technique_common><accessor source="#panel-pa" count="4" stride="3"/></technique_common></source>
+      <vertices id="panel-v"><input semantic="POSITION" source="#panel-p"/></vertices>
+      <triangles material="glow" count="2"><input semantic="VERTEX" source="#panel-v" offset="0"/><p>0 2 1 0 3 2</p></triangles>
+    </mesh></geometry>
+    <geometry id="floor"><mesh>
+      <source id="floor-p"><float_array id="floor-pa" count="12">-2 -2 0 2 -2 0 2 2 0 -2 2 0</float_array>
+        <technique_common><accessor source="#floor-pa" count="4" stride="3"/></technique_common></source>
+      <vertices id="floor-v"><input semantic="POSITION" source="#floor-p"/></vertices>
+      <triangles material="grey" count="2"><input semantic="VERTEX" source="#floor-v" offset="0"/><p>0 1 2 0 2 3</p></triangles>
+    </mesh></geometry>
+  </library_geometries>
+  <library_visual_scenes><visual_scene id="s">
+    <node id="Area"><matrix>0.6 0 0 0 0 0.8 0 0 0 0 1 1 0 0 0 1</matrix><instance_light url="#lamp"/></node>
+    <node id="panel"><instance_geometry url="#panel"><bind_material><technique_common>
+      <instance_material symbol="glow" target="#glow"/></technique_common></bind_material></instance_geometry></node>
+    <node id="floor"><instance_geometry url="#floor"><bind_material><technique_common>
+      <instance_material symbol="grey" target="#grey"/></technique_common></bind_material></instance_geometry></node>
+  </visual_scene></library_visual_scenes>
+  <scene><instance_visual_scene url="#s"/></scene>
+</COLLADA>
+)";
+
+// A panel unlike its light is said once, on standard error, naming the file and the light's
+// element and what is rendered; a panel that is its light's shape says nothing.
+TEST_F(CliTest, APanelUnlikeItsLightIsNamedOnceWithItsFile) {
+  std::ofstream(file("panel.dae")) << kPanelUnlikeItsLight;
+  Outcome run = pathtracer("-t 1 -s 1 -m 2 -r 8 6 -f panel.png panel.dae");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string head = "warning: panel.dae: <light name=\"Lamp\">";
+  const size_t at = run.err.find(head);
+  ASSERT_NE(at, std::string::npos) << run.err;
+  EXPECT_EQ(run.err.find(head, at + 1), std::string::npos) << "said once: " << run.err;
+  const std::string line = run.err.substr(at, run.err.find('\n', at) - at);
+  EXPECT_NE(line.find("differ in shape;"), std::string::npos) << line;
+  EXPECT_NE(line.find("the light's rectangle with its radiance lights the scene"), std::string::npos)
+      << line;
+  std::string agreeing = kPanelUnlikeItsLight;
+  agreeing.replace(agreeing.find("0.6 0 0 0 0 0.8"), 15, "0.8 0 0 0 0 0.6");
+  std::ofstream(file("agreeing.dae")) << agreeing;
+  Outcome quiet = pathtracer("-t 1 -s 1 -m 2 -r 8 6 -f agreeing.png agreeing.dae");
+  ASSERT_EQ(quiet.exit_code, 0) << quiet.err;
+  EXPECT_EQ(quiet.err.find("<light"), std::string::npos) << quiet.err;
+}
+
 TEST_F(CliTest, TheCourseCommandLinesRunWithOptionsOnEitherSideOfTheScene) {
   std::ofstream(file("lit.dae")) << lit_quad_scene();
   // The course's own command lines (its README's and write-up's), with its scene paths replaced

@@ -65,7 +65,7 @@ int sample_quad8(const SampledLight& l, const glm::vec3& p, const glm::vec2 u[8]
   const __m256 ux = _mm256_setr_ps(u[0].x, u[1].x, u[2].x, u[3].x, u[4].x, u[5].x, u[6].x, u[7].x);
   const __m256 uy = _mm256_setr_ps(u[0].y, u[1].y, u[2].y, u[3].y, u[4].y, u[5].y, u[6].y, u[7].y);
   const __m256 sign = splat(-0.0f);
-  const glm::vec3& n = l.sampled_triangles[0].n;
+  const glm::vec3& n = l.normal;
   __m256 q[3], d[3], wa_abs[3];
   for (int k = 0; k < 3; ++k) {
     const __m256 wa = splat(l.corner[k]);

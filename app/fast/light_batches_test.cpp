@@ -209,7 +209,7 @@ SurfaceHit point_around(Rng& rng, int i) {
 
 // A batch of n samples (every n from 1 to 8) of a course-like quad, of two turned about two axes
 // (every term of every coordinate counts: near the points, and far from the origin), of a
-// trapezoid (two triangles, not a quad) and of a mesh: each is make_sample's to the bit, and each
+// trapezoid panel (sampled on its light's rectangle) and of a mesh: each is make_sample's to the bit, and each
 // shadow ray make_shadow_ray's. And a quad's ray made in the batch is handed out only for the
 // sample and point it was made for: a copy with any input changed (the sample's direction,
 // point, error box, normal, whole or its z alone, or distance; the point's position, error box or
@@ -229,7 +229,8 @@ TEST(FastLightBatches, BatchedSamplesAndShadowRaysAreTheDefinitionsBitForBit) {
   const LightSet course_lights(course), trapezoid_lights(trapezoid), near_lights(near), far_lights(far);
   ASSERT_TRUE(course_lights.lights().at(0).quad);
   ASSERT_EQ(course_lights.lights().at(1).kind, SampledLightKind::mesh);
-  ASSERT_FALSE(trapezoid_lights.lights().at(0).quad);
+  // A panel unlike its light (a trapezoid) is sampled on the light's rectangle: a quad as well.
+  ASSERT_TRUE(trapezoid_lights.lights().at(0).quad);
   ASSERT_TRUE(near_lights.lights().at(0).quad);
   ASSERT_TRUE(far_lights.lights().at(0).quad);
   struct Case { const LightSet* set; int index; };

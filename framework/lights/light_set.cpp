@@ -118,10 +118,15 @@ bool same_radiance(const glm::vec3& a, const glm::vec3& b) {
   return std::max({d.x, d.y, d.z}) <= 1e-5f * scale;
 }
 
-// The warning for area light `l` whose panel is `panel` (its triangles), or "" when the two agree
-// in shape (the panel covers the light's parallelogram and no more) and in radiance.
-std::string panel_disagreement(const Scene& scene, const SampledLight& l,
-                               const std::vector<uint32_t>& panel) {
+// How area light `l`'s panel (its triangles) compares with the light: whether the two have one
+// shape (the panel covers the light's parallelogram and no more), and the warning to give when
+// they differ in shape or radiance ("" when they agree).
+struct PanelComparison {
+  bool same_shape = false;
+  std::string warning;
+};
+PanelComparison compare_panel(const Scene& scene, const SampledLight& l,
+                              const std::vector<uint32_t>& panel) {
   const glm::vec3 n_raw = glm::cross(l.edge_u, l.edge_v);
   const float n2 = glm::dot(n_raw, n_raw);
   float s_lo = 1e30f, s_hi = -1e30f, t_lo = 1e30f, t_hi = -1e30f, area = 0.0f;
@@ -142,21 +147,24 @@ std::string panel_disagreement(const Scene& scene, const SampledLight& l,
     if (!different && !same_radiance(m.emission, l.radiance)) different = &m;
   }
   const float tol = 1e-3f;
-  const bool same_shape = std::abs(s_lo) <= tol && std::abs(s_hi - 1.0f) <= tol &&
-                          std::abs(t_lo) <= tol && std::abs(t_hi - 1.0f) <= tol &&
-                          std::abs(area - l.area) <= tol * l.area;
-  if (same_shape && !different) return "";
+  PanelComparison out;
+  out.same_shape = std::abs(s_lo) <= tol && std::abs(s_hi - 1.0f) <= tol &&
+                   std::abs(t_lo) <= tol && std::abs(t_hi - 1.0f) <= tol &&
+                   std::abs(area - l.area) <= tol * l.area;
+  if (out.same_shape && !different) return out;
   const Material& shown = different ? *different : scene.materials[scene.triangles[panel[0]].material];
   const float lu = glm::length(l.edge_u), lv = glm::length(l.edge_v);
-  std::string name = l.source && !l.source->name.empty() ? "\"" + l.source->name + "\" " : "";
-  return "area light " + name + "(" + number(lu) + " × " + number(lv) + ", radiance " +
-         rgb(l.radiance) + ") and its panel (material \"" + shown.name + "\", " +
-         number((s_hi - s_lo) * lu) + " × " + number((t_hi - t_lo) * lv) + " along the light's edges, area " +
-         number(area) + ", emission " + rgb(shown.emission) + ") differ in " +
-         (same_shape ? "radiance" : different ? "shape and radiance" : "shape") +
-         "; rendering one emitter, the panel's shape (what the camera sees) with the light's radiance "
-         "(what lights the scene when the course samples its lights), so that light sampling, MIS and "
-         "hemisphere sampling all see and sample the same light";
+  const std::string name = l.source ? l.source->name : std::string();
+  out.warning =
+      "<light name=\"" + name + "\"> (a CGL area light, " + number(lu) + " × " + number(lv) +
+      ", radiance " + rgb(l.radiance) + ") and its panel (material \"" + shown.name + "\", " +
+      number((s_hi - s_lo) * lu) + " × " + number((t_hi - t_lo) * lv) +
+      " along the light's edges, area " + number(area) + ", emission " + rgb(shown.emission) +
+      ") differ in " + (out.same_shape ? "radiance" : different ? "shape and radiance" : "shape") +
+      "; as the course renders it, the light's rectangle with its radiance lights the scene (light "
+      "samples, hemisphere and BSDF samples all reach it) and the panel, glowing with the light's "
+      "radiance, is what the camera, mirrors and glass show";
+  return out;
 }
 
 // The end of every panel and mesh sample: the point q = wa + wb + wc on the light (the sum in
@@ -281,43 +289,39 @@ float triangle_pick_probability(const SampledLight& l, const glm::vec3& a, const
   return 0.5f * glm::length(glm::cross(b - a, c - a)) * l.inv_area;
 }
 
-// A point on one of light l's triangles, picked with probability area / l.area and uniformly on
-// it (by solid angle where a mesh light's triangle is seen under a usable one, above); one-sided
-// (a panel) or not. Fills ls and returns whether the point can send light towards
-// p. Every light sample of a mesh light, and of a panel that is not a quad, comes here: its
-// triangle's corners and normal are read from the light's own table, and 1 / area is the light's.
-bool sample_triangles(const SampledLight& l, const glm::vec3& p, glm::vec2 u, bool one_sided,
-                      LightSample* ls) {
+// A point on one of mesh light l's triangles, picked with probability area / l.area and uniformly
+// on it (by solid angle where the triangle is seen under a usable one, above); two-sided. Fills
+// ls and returns whether the point can send light towards p. Every light sample of a mesh light
+// comes here: its triangle's corners and normal are read from the light's own table, and
+// 1 / area is the light's.
+bool sample_triangles(const SampledLight& l, const glm::vec3& p, glm::vec2 u, LightSample* ls) {
   int cell;
   const float x = l.triangle_pick.sample_continuous(u.x, nullptr, &cell);
   const float u0 = std::clamp(x * float(l.triangle_pick.size()) - float(cell), 0.0f, 1.0f);
   const SampledLight::SampledTriangle& t = l.sampled_triangles[cell];
   if (t.n == glm::vec3(0.0f)) return false;
-  if (l.kind == SampledLightKind::mesh) {
-    const SphericalTriangle s = spherical_triangle(p, t.a, t.b, t.c);
-    if (s.usable)
-      return sample_triangle_by_solid_angle(l, t, s, triangle_pick_probability(l, t.a, t.b, t.c), p,
-                                            {u0, u.y}, ls);
-  }
+  const SphericalTriangle s = spherical_triangle(p, t.a, t.b, t.c);
+  if (s.usable)
+    return sample_triangle_by_solid_angle(l, t, s, triangle_pick_probability(l, t.a, t.b, t.c), p,
+                                          {u0, u.y}, ls);
   const glm::vec3 bary = square_to_uniform_triangle({u0, u.y});
-  return finish_surface_sample(l, p, bary.x * t.a, bary.y * t.b, bary.z * t.c, t.n, one_sided,
+  return finish_surface_sample(l, p, bary.x * t.a, bary.y * t.b, bary.z * t.c, t.n, false,
                                nullptr, ls);
 }
 
-// A point of a quad panel: corner + u.x·edge_u + u.y·edge_v, uniform on the parallelogram its
-// two triangles tile, so with the density 1 / area that picking a triangle by area and a point on
-// it has. The terms' rounding (the edges are differences of the corners) is within γ6 of their
-// sizes; quad_slack covers the far corner's distance from the parallelogram's.
+// A point of a panel light: corner + u.x·edge_u + u.y·edge_v, uniform on the light's rectangle
+// (density 1 / area), one-sided. The terms' rounding is within γ6 of their sizes; where the
+// rectangle is the parallelogram the panel's two triangles tile, quad_slack covers the far
+// corner's distance from the parallelogram's.
 bool sample_quad(const SampledLight& l, const glm::vec3& p, glm::vec2 u, LightSample* ls) {
-  return finish_surface_sample(l, p, l.corner, u.x * l.edge_u, u.y * l.edge_v,
-                               l.sampled_triangles[0].n, true, &l.quad_slack, ls);
+  return finish_surface_sample(l, p, l.corner, u.x * l.edge_u, u.y * l.edge_v, l.normal, true,
+                               &l.quad_slack, ls);
 }
 
 // A panel's or mesh's sample from p into *ls (LightSample{} where its point cannot light p).
 [[gnu::always_inline]] inline void sample_surface(const SampledLight& l, const glm::vec3& p, glm::vec2 u,
                                                   LightSample* ls) {
-  const bool one_sided = l.kind == SampledLightKind::panel;
-  const bool found = l.quad ? sample_quad(l, p, u, ls) : sample_triangles(l, p, u, one_sided, ls);
+  const bool found = l.quad ? sample_quad(l, p, u, ls) : sample_triangles(l, p, u, ls);
   if (!found) *ls = LightSample{};
 }
 
@@ -425,19 +429,33 @@ LightSet::LightSet(const Scene& scene, const EnvironmentMap* environment)
     mesh_areas[tri.material].push_back(area);
     m.area += area;
   }
-  // An area light with a panel becomes that panel: sampled and hit on the same triangles.
+  // An area light with a panel: sampled on the light's own rectangle (its corner, edges and
+  // normal, set above), and seen by the camera through the panel's triangles. Where the two have
+  // one shape, the panel's own parallelogram is sampled instead: the same points with the same
+  // density, and each sample's error box then covers the triangles the camera sees.
   for (size_t k = 0; k < scene_lights; ++k) {
     if (panels[k].empty()) continue;
     SampledLight& l = lights_[k];
-    std::string warning = panel_disagreement(scene, l, panels[k]);
-    if (!warning.empty()) warnings_.push_back(std::move(warning));
+    PanelComparison comparison = compare_panel(scene, l, panels[k]);
+    if (!comparison.warning.empty()) warnings_.push_back(std::move(comparison.warning));
     l.kind = SampledLightKind::panel;
     l.triangles = std::move(panels[k]);
-    l.area = 0.0f;
-    for (float a : panel_areas[k]) l.area += a;
     l.triangle_pick = Distribution1D(panel_areas[k]);
     l.sampled_triangles = sampled_triangles(scene, l.triangles, l.normal);
-    find_quad(&l);
+    if (comparison.same_shape) {
+      SampledLight panel_quad = l;
+      find_quad(&panel_quad);
+      if (panel_quad.quad) {
+        l.corner = panel_quad.corner;
+        l.edge_u = panel_quad.edge_u;
+        l.edge_v = panel_quad.edge_v;
+        l.quad_slack = panel_quad.quad_slack;
+        l.normal = panel_quad.sampled_triangles[0].n;
+        l.area = 0.0f;
+        for (float a : panel_areas[k]) l.area += a;
+      }
+    }
+    l.quad = true;
     for (uint32_t prim : l.triangles) primitive_light_[prim] = int(k);
   }
   for (auto& [material, m] : meshes) {
@@ -597,20 +615,15 @@ float LightSet::pdf(int index, const SurfaceHit& hit, const glm::vec3& wi,
     case SampledLightKind::spot:
     case SampledLightKind::directional:
       return 0.0f;
-    case SampledLightKind::parallelogram: {
+    case SampledLightKind::parallelogram:
+    case SampledLightKind::panel: {
+      // Where the direction crosses the light's rectangle, wherever the ray ended: whether it
+      // reached the light is emitted_along's answer.
+      (void)on_light;
       float t = hit_parallelogram(l, hit.p, wi);
       float cos_l = glm::dot(-wi, l.normal);
       if (!(t > 0.0f) || !(cos_l > 0.0f)) return 0.0f;
       return area_to_solid_angle_pdf(1.0f / l.area, t, cos_l);
-    }
-    case SampledLightKind::panel: {
-      if (!on_light || light_of_primitive(on_light->primitive) != index) return 0.0f;
-      const Triangle& tri = scene_.triangles[on_light->primitive];
-      const glm::vec3 n = triangle_normal(scene_.positions[tri.v[0]], scene_.positions[tri.v[1]],
-                                          scene_.positions[tri.v[2]], l.normal);
-      const float cos_l = glm::dot(-wi, n);
-      if (!(cos_l > 0.0f)) return 0.0f;  // its back: sample() never draws it
-      return area_to_solid_angle_pdf(1.0f / l.area, glm::length(on_light->p - hit.p), cos_l);
     }
     case SampledLightKind::mesh: {
       if (!on_light || light_of_primitive(on_light->primitive) != index) return 0.0f;
@@ -663,12 +676,51 @@ glm::vec3 LightSet::emitted(int index, const SurfaceHit& on_light, const glm::ve
   }
 }
 
+glm::vec3 LightSet::emitted_along(int index, const Ray& ray, const SurfaceHit* hit) const {
+  const SampledLight& l = lights_[index];
+  const bool hit_is_this_light = hit && light_of_primitive(hit->primitive) == index;
+  switch (l.kind) {
+    case SampledLightKind::panel: {
+      // The light's rectangle, from its front, before anything the ray hit but its own panel
+      // (which lies in the rectangle's plane and does not hide it).
+      if (!(glm::dot(-ray.d, l.normal) > 0.0f)) return glm::vec3(0.0f);
+      const float t = hit_parallelogram(l, ray.o, ray.d);
+      if (!(t > ray.tmin)) return glm::vec3(0.0f);
+      if (hit && !hit_is_this_light && !(hit->t >= t)) return glm::vec3(0.0f);
+      return l.radiance;
+    }
+    case SampledLightKind::mesh:
+    case SampledLightKind::sphere:
+      return hit_is_this_light ? emitted(index, *hit, ray.d) : glm::vec3(0.0f);
+    case SampledLightKind::uniform_environment:
+    case SampledLightKind::image_environment:
+      return hit ? glm::vec3(0.0f) : emitted(index, SurfaceHit{}, ray.d);
+    default:
+      return glm::vec3(0.0f);  // delta lights and area lights without a panel: no ray reaches them
+  }
+}
+
+glm::vec3 LightSet::radiance_along(const Ray& ray, const SurfaceHit* hit) const {
+  glm::vec3 L(0.0f);
+  for (int k = 0; k < int(lights_.size()); ++k) L += emitted_along(k, ray, hit);
+  return L;
+}
+
 bool LightSet::unoccluded(const RayQuery& query, const Ray& ray, int index) const {
-  // Every finite light's samples lie on its own surface (a panel's and a mesh's on their
-  // triangles), and the shadow ray stops short of the sample's error box, so whatever the ray
-  // meets is a blocker.
-  (void)index;
-  return !query.occluded(ray);
+  // Every finite light's samples lie on its own surface (a panel light's on its rectangle, a
+  // mesh's on its triangles), and the shadow ray stops short of the sample's error box, so
+  // whatever the ray meets is a blocker, but for a panel light's own panel: it lies in the
+  // rectangle's plane and does not hide its light (as emitted_along says).
+  if (!query.occluded(ray)) return true;
+  if (lights_[index].kind != SampledLightKind::panel) return false;
+  Ray rest = ray;
+  SurfaceHit h;
+  for (int i = 0; i < 8; ++i) {
+    if (!query.intersect(rest, &h)) return true;
+    if (light_of_primitive(h.primitive) != index) return false;
+    rest.tmin = h.t;
+  }
+  return false;
 }
 
 }  // namespace pt

@@ -1,23 +1,25 @@
 // The lights a renderer samples: the scene's lights, its emissive geometry and the environment.
 //
-// The emitter rule: one emitter, one set of numbers. Whatever reaches "the light" (a camera ray,
-// a ray after a mirror or glass bounce, a hemisphere or BSDF sample) sees exactly what light
-// sampling samples: the same shape, the same radiance, the same side. Nothing is counted twice.
+// The emitter rule: every estimator of the light arriving at a point samples or reaches the same
+// emitter, with the same numbers, so light sampling, MIS and hemisphere sampling converge to one
+// image; nothing is counted twice.
 // - Point, spot and directional lights (COLLADA library_lights) are sampled once each (delta
 //   lights); no ray can hit them.
 // - A CGL area light with an emissive panel on it (triangles in its plane, within a thousandth of
-//   its size, whose centroids lie inside it: the course's "light" mesh) is one emitter: the
-//   panel's triangles, the shape the camera sees, emitting the light's radiance on the light's
-//   side only (one-sided, as the course's area light is). Light sampling picks points on those
-//   triangles by area (a panel of two triangles that tile a parallelogram, as every course
-//   panel does, is sampled on that parallelogram: the same density, a shorter computation); a
-//   ray that hits one sees the light's radiance from the front and nothing from behind. When
-//   the file's panel and light disagree (CBcoil's panel is 0.8 × 0.6 with
-//   radiance 10 where its light is 0.6 × 0.8 with radiance 5), the course itself renders two
-//   emitters: the camera sees the panel, its light sampling lights the room with the light. We
-//   keep the panel's shape (what students see in the course's images) and the light's radiance
-//   (what lights the scene in the course's default, light-sampled renders), so that every
-//   estimator converges to one image; warnings() says so for each such light.
+//   its size, whose centroids lie inside it: the course's "light" mesh) is lit and seen as the
+//   course's renderer lights and shows it. What lights the scene is the light's own rectangle
+//   (its position, edges and side as the loader reads them) with the light's radiance, one-sided:
+//   light samples are drawn on it, and a ray traced to estimate the light at a non-specular point
+//   (a hemisphere sample, MIS's BSDF sample) receives emitted_along(): the light's radiance where
+//   it crosses the rectangle from the front before anything but the light's own panel. What the
+//   camera, a mirror or glass shows is the panel (light_of_primitive and emitted(), which a ray
+//   from the camera or a specular bounce asks): the panel's triangles, glowing with the light's
+//   radiance on the light's side. A specular bounce is never light sampled, so every estimator
+//   counts what such a ray sees the same way, and the two views never add up to twice the light.
+//   When the file's panel and light differ (CBspheres' panel is 0.8 × 0.6 where its light is
+//   0.6 × 0.8), warnings() says so once for each such light. Where they agree the panel's own
+//   parallelogram is sampled (a panel of two triangles that tile it, as every course panel does):
+//   the same points, with their error boxes around the triangles.
 // - A CGL area light with no panel is sampled over its parallelogram, one-sided; nothing in the
 //   scene is it, so no ray can hit it (as in the course, the camera does not see it), and
 //   hemisphere sampling cannot see it either, as it cannot see a point light.
@@ -29,7 +31,8 @@
 // - Lights that cannot emit (zero area, zero radiance, degenerate triangles) are left out, so
 //   nothing ever divides by a zero area.
 // A surface emits only as a light of this set: emitted() is the one answer to "what does this
-// hit send back", for zero-bounce emission, specular paths and MIS's BSDF samples alike.
+// hit send back" to the camera and after a specular bounce; emitted_along() (radiance_along(),
+// summed over the lights) is the one answer for a hemisphere or BSDF sample of direct light.
 #pragma once
 
 #include <cmath>
@@ -53,9 +56,9 @@
 
 namespace pt {
 
-/// parallelogram: an area light without a panel; panel: an area light seen through its panel
-/// (the panel's triangles with the light's radiance, one-sided); mesh: emissive triangles of one
-/// material (two-sided); sphere: an emissive sphere.
+/// parallelogram: an area light without a panel; panel: an area light with a panel (sampled and
+/// reached on its rectangle, seen by the camera as its panel, one-sided); mesh: emissive
+/// triangles of one material (two-sided); sphere: an emissive sphere.
 enum class SampledLightKind { point, spot, directional, parallelogram, panel, mesh, sphere,
                               uniform_environment, image_environment };
 
@@ -79,13 +82,13 @@ struct SampledLight {
   glm::vec3 radiance{0.0f};       ///< intensity, irradiance or radiance, by kind
   const Light* source = nullptr;  ///< the scene light it came from, if any
   // parallelogram, panel: the area light's corner + s·edge_u + t·edge_v, normal on its emitting
-  // side (a panel emits on the side of its triangles that agrees with it). A quad panel's corner
-  // and edges are then its own parallelogram, the one it is sampled on.
+  // side (a panel glows on the side of its triangles that agrees with it). Where a panel has the
+  // light's shape, its own parallelogram (the same rectangle, to rounding) stands for it.
   glm::vec3 corner{0.0f}, edge_u{0.0f}, edge_v{0.0f}, normal{0.0f};
-  /// panel: its two triangles tile the parallelogram corner + s·edge_u + t·edge_v (every course
-  /// light's panel does), which is sampled directly: the same uniform density, without picking
-  /// a triangle and warping into it. quad_slack bounds how far a point of the parallelogram can
-  /// be from the triangles (the far corner's rounding), and widens each sample's error box.
+  /// panel: always; its samples are corner + u.x·edge_u + u.y·edge_v, uniform on the light's
+  /// rectangle. Where that is the panel's own parallelogram, quad_slack bounds how far a point of
+  /// it can be from the two triangles (the far corner's rounding) and widens each sample's error
+  /// box; zero otherwise.
   bool quad = false;
   glm::vec3 quad_slack{0.0f};
   float area = 0.0f;                    ///< the surface it samples: parallelogram, triangles or sphere
@@ -106,7 +109,7 @@ struct SampledLight {
            kind == SampledLightKind::directional;
   }
   /// Whether a ray can reach it (a BSDF sample, a camera ray): everything but delta lights and
-  /// area lights without a panel. Only then does pdf() answer for a ray that found it.
+  /// area lights without a panel. Only then does pdf() answer for a ray that reached it.
   bool can_be_hit() const { return !is_delta() && kind != SampledLightKind::parallelogram; }
   bool is_infinite() const {
     return kind == SampledLightKind::uniform_environment ||
@@ -137,7 +140,9 @@ class LightSet {
   LightSample make_sample(int index, const SurfaceHit& hit, glm::vec2 u) const;
 
   /// Density (per steradian) with which sample() would pick direction `wi` from `hit` for light
-  /// `index`, where the ray hit `on_light` (null for an escaping ray). Zero for delta lights.
+  /// `index`, where the ray hit `on_light` (null for an escaping ray). Zero for delta lights. For
+  /// an area light, the density of the direction where it crosses the light's rectangle (whether
+  /// the ray got there is emitted_along's to say).
   float pdf(int index, const SurfaceHit& hit, const glm::vec3& wi, const SurfaceHit* on_light) const;
 
   /// Which light a ray that hit primitive `primitive` reached: a mesh or sphere light, or the
@@ -145,16 +150,28 @@ class LightSet {
   int light_of_primitive(uint32_t primitive) const {
     return primitive < primitive_light_.size() ? primitive_light_[primitive] : -1;
   }
-  /// Radiance light `index` sends back along −wi from the point `on_light` that a ray in
-  /// direction wi reached: a panel only from its light's side (so the ceiling just above a panel
-  /// is dark by every estimator), two-sided emitters from both.
+  /// What the camera, a mirror or glass sees: the radiance light `index` sends back along −wi from
+  /// the point `on_light` that a ray in direction wi reached (light_of_primitive's light): a
+  /// panel only from its light's side, two-sided emitters from both.
   glm::vec3 emitted(int index, const SurfaceHit& on_light, const glm::vec3& wi) const;
 
-  /// One line per area light whose panel differs from it in shape or radiance, saying what is
-  /// rendered and why (see the emitter rule above); empty when the scene's panels agree.
+  /// What light `index` sends along `ray`, traced from a non-specular point to estimate its direct
+  /// light (a hemisphere sample, MIS's BSDF sample), whose nearest hit is `hit` (null: it
+  /// escaped): the light as sample() draws it. An area light with a panel: its radiance where
+  /// the ray crosses its rectangle from the front, unless something other than its own panel was
+  /// hit first (so the ceiling just above a panel is dark by every estimator); a mesh or sphere
+  /// light: emitted() if the hit is its own; an environment: its radiance if the ray escaped;
+  /// zero for lights no ray reaches.
+  glm::vec3 emitted_along(int index, const Ray& ray, const SurfaceHit* hit) const;
+  /// emitted_along() summed over every light: all the light such a ray brings back.
+  glm::vec3 radiance_along(const Ray& ray, const SurfaceHit* hit) const;
+
+  /// One line per area light whose panel differs from it in shape or radiance, naming the light
+  /// element and saying what is rendered (see the emitter rule above); empty when they agree.
   const std::vector<std::string>& warnings() const { return warnings_; }
 
-  /// Whether nothing blocks the shadow ray `ray` built for a sample of light `index`.
+  /// Whether nothing blocks the shadow ray `ray` built for a sample of light `index` (a panel
+  /// light's own panel does not).
   bool unoccluded(const RayQuery& query, const Ray& ray, int index) const;
 
  private:

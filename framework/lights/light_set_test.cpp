@@ -1,14 +1,15 @@
 // LightSet: the samples of each kind of light, as directions from a point, against the density
 // LightSet::pdf claims for them (chi-square at significance 0.01, Nori's level; each density
-// integrates to 1); and the emitter rule: an area light and the panel on it are one emitter (the
-// panel's triangles with the light's radiance, one-sided), and a panel that disagrees with its
-// light says so once.
+// integrates to 1); and the emitter rule: an area light with a panel on it lights the scene from
+// its own rectangle (light samples land there, hemisphere and BSDF samples reach it there) while
+// the camera sees the panel, and a panel that disagrees with its light says so once.
 #include "framework/lights/light_set.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <string>
 
@@ -18,6 +19,8 @@
 #include "framework/sampling/chi2_test_util.h"
 #include "framework/sampling/rng.h"
 #include "framework/sampling/warp.h"
+#include "framework/scene/collada_loader.h"
+#include "framework/testing/test_paths.h"
 #include "framework/testing/test_scenes.h"
 
 namespace pt {
@@ -76,9 +79,9 @@ TEST(FrameworkLightSet, RectangleAreaLightBySolidAngleFitsItsDensity) {
   expect_light_fits_its_density(s, glm::vec3(0.2f, -0.1f, 0.0f), {0, 0, 1});
 }
 
-// An area light seen through a panel that is not its shape (CBcoil's 0.8 × 0.6 panel on a
-// 0.6 × 0.8 light): its samples are directions to the panel, with the density pdf() gives the
-// panel point a ray in that direction reaches.
+// An area light with a panel that is not its shape (CBcoil's 0.8 × 0.6 panel on a 0.6 × 0.8
+// light): its samples are directions to the light's rectangle, with the density pdf() gives the
+// direction.
 TEST(FrameworkLightSet, AreaLightPanelBySolidAngleFitsItsDensity) {
   Scene s = test::disagreeing_panel_scene();
   expect_light_fits_its_density(s, glm::vec3(0.4f, 0.0f, 0.0f), {-0.4f, 0.0f, 0.5f});
@@ -153,21 +156,6 @@ LightSample surface_sample_by_definition(const SampledLight& l, const glm::vec3&
   return ls;
 }
 
-/// A sample of panel or mesh light `l` as its definition computes it in glm, one component at a
-/// time: LightSet::sample does these operations in SIMD lanes where the build has them, and must
-/// give the same bits.
-LightSample triangle_sample_by_definition(const SampledLight& l, const glm::vec3& p, glm::vec2 u,
-                                          bool one_sided) {
-  int cell;
-  const float x = l.triangle_pick.sample_continuous(u.x, nullptr, &cell);
-  const float u0 = std::clamp(x * float(l.triangle_pick.size()) - float(cell), 0.0f, 1.0f);
-  const SampledLight::SampledTriangle& t = l.sampled_triangles[cell];
-  if (t.n == glm::vec3(0.0f)) return {};
-  const glm::vec3 bary = square_to_uniform_triangle({u0, u.y});
-  return surface_sample_by_definition(l, p, bary.x * t.a, bary.y * t.b, bary.z * t.c, t.n,
-                                      one_sided);
-}
-
 void expect_same_bits(const glm::vec3& a, const glm::vec3& b, const char* what, int i) {
   for (int k = 0; k < 3; ++k)
     ASSERT_EQ(float_to_bits(a[k]), float_to_bits(b[k])) << what << "[" << k << "], sample " << i;
@@ -185,6 +173,8 @@ void expect_same_sample(const LightSample& got, const LightSample& want, int i) 
   ASSERT_EQ(got.delta, want.delta) << "delta, sample " << i;
 }
 
+LightSample quad_sample_by_definition(const SampledLight& l, const glm::vec3& p, glm::vec2 u);
+
 /// Shading point i of a bit-for-bit test: anywhere around panel_on_light's panel, on a plane of
 /// zeros of either sign (every fifth), far away (every seventh) or on the panel (every eleventh).
 SurfaceHit point_around_the_panel(Rng& rng, int i) {
@@ -196,37 +186,38 @@ SurfaceHit point_around_the_panel(Rng& rng, int i) {
   return at;
 }
 
-// Panels (one-sided), seen from points all around them, some on the light itself, at zero
-// coordinates of either sign and far away: every field of every sample is the definition's, to
-// the bit. (A mesh's triangle seen under a usable solid angle is sampled by that solid angle, held
-// to its density by the chi-square tests and light_set_near_field_test.)
-TEST(FrameworkLightSet, TriangleLightSamplesAreTheirDefinitionBitForBit) {
+// A panel that is not its light's shape (a trapezoid) is sampled on the light's rectangle, seen
+// from points all around it, some on the light itself, at zero coordinates of either sign and far
+// away: every field of every sample is the definition's, to the bit. (A mesh's triangle seen
+// under a usable solid angle is sampled by that solid angle, held to its density by the
+// chi-square tests and light_set_near_field_test.)
+TEST(FrameworkLightSet, APanelUnlikeItsLightIsSampledOnItsRectangleBitForBit) {
   Scene s = panel_on_light(0.4f, 0.3f, 10.0f, {0.8f, 0, 0}, {0, 0.6f, 0}, 10.0f);
   s.positions[3].x = -0.2f;  // a trapezoid: a panel of triangles, not a quad
   const uint32_t glow = test::add_material(s, glm::vec3(0), glm::vec3(2.0f, 3.0f, 4.0f));
   test::add_triangle(s, {-1, -0.5f, -1}, {1.5f, -0.7f, -1.2f}, {0.2f, 1.0f, -0.6f}, glow);
-  test::add_triangle(s, {2, 2, 2}, {3, 2, 2.5f}, {2, 4, 2}, glow);
-  // In the plane x = -0: the error bound's x is glm::abs's sum of -0s, which is -0.
-  test::add_triangle(s, {-0.0f, 1, 2}, {-0.0f, 2, 2}, {-0.0f, 1, 3}, glow);
   const LightSet lights(s);
   ASSERT_EQ(lights.lights().size(), 2u);
-  ASSERT_EQ(lights.lights()[0].kind, SampledLightKind::panel);
-  ASSERT_FALSE(lights.lights()[0].quad);
+  const SampledLight& l = lights.lights()[0];
+  ASSERT_EQ(l.kind, SampledLightKind::panel);
+  ASSERT_TRUE(l.quad);
+  EXPECT_EQ(l.corner, glm::vec3(-0.4f, -0.3f, 1.0f)) << "the light's corner, not the panel's";
+  EXPECT_EQ(l.edge_u, glm::vec3(0.8f, 0, 0));
+  EXPECT_EQ(l.edge_v, glm::vec3(0, 0.6f, 0));
+  EXPECT_EQ(l.quad_slack, glm::vec3(0.0f));
   ASSERT_EQ(lights.lights()[1].kind, SampledLightKind::mesh);
   Rng rng(11, 4);
   long kept = 0;
   for (int i = 0; i < 20000; ++i) {
     const SurfaceHit at = point_around_the_panel(rng, i);
     const glm::vec2 u = rng.next_2d();
-    for (int k = 0; k < 1; ++k) {
-      const LightSample got = lights.sample(k, at, u);
-      const LightSample want = triangle_sample_by_definition(lights.lights()[k], at.p, u, k == 0);
-      expect_same_sample(got, want, i);
-      if (testing::Test::HasFatalFailure()) return;
-      kept += want.pdf > 0.0f;
-    }
+    const LightSample got = lights.sample(0, at, u);
+    const LightSample want = quad_sample_by_definition(l, at.p, u);
+    expect_same_sample(got, want, i);
+    if (testing::Test::HasFatalFailure()) return;
+    kept += want.pdf > 0.0f;
   }
-  EXPECT_GT(kept, 10000) << "most samples should reach the point";
+  EXPECT_GT(kept, 8000) << "the samples from below the light should reach it";
 }
 
 TEST(FrameworkLightSet, APanelThatMatchesItsLightSaysNothing) {
@@ -256,20 +247,22 @@ TEST(FrameworkLightSet, APanelThatDisagreesWithItsLightSaysWhatIsRendered) {
     EXPECT_NE(w.find(c.differs), std::string::npos) << w;
     EXPECT_NE(w.find("\"Lamp\""), std::string::npos) << w;
     EXPECT_NE(w.find("\"panel\""), std::string::npos) << w;
-    EXPECT_NE(w.find("the panel's shape"), std::string::npos) << w;
-    EXPECT_NE(w.find("the light's radiance"), std::string::npos) << w;
+    EXPECT_NE(w.find("<light name=\"Lamp\">"), std::string::npos) << "names the element: " << w;
+    EXPECT_NE(w.find("the light's rectangle with its radiance lights the scene"), std::string::npos)
+        << w;
+    EXPECT_NE(w.find("the panel, glowing with the light's radiance, is what the camera"),
+              std::string::npos) << w;
   }
   const Scene coil = panel_on_light(0.4f, 0.3f, 20.0f, {0.6f, 0, 0}, {0, 0.8f, 0}, 10.0f);
   const std::string w = LightSet(coil).warnings().at(0);
-  EXPECT_NE(w.find("(0.6 × 0.8, radiance 10)"), std::string::npos) << w;
+  EXPECT_NE(w.find("0.6 × 0.8, radiance 10)"), std::string::npos) << w;
   EXPECT_NE(w.find("0.8 × 0.6 along the light's edges, area 0.48, emission 20"), std::string::npos) << w;
 }
 
-// Light sampling samples what a ray can hit: points on the panel's triangles (never where only
-// the light's parallelogram reaches), with the light's radiance; a ray that reaches the panel
-// from below sees that radiance, from above nothing, and pdf() agrees on both sides.
-TEST(FrameworkLightSet, ThePanelIsWhatIsSampledAndWhatIsSeen) {
-  const Scene s = panel_on_light(0.4f, 0.3f, 20.0f, {0.6f, 0, 0}, {0, 0.8f, 0}, 10.0f);
+// CBspheres' panel is 0.8 × 0.6 on a 0.6 × 0.8 light: light sampling samples the light's own
+// rectangle with its radiance (as the course's renderer does), never where only the panel is.
+TEST(FrameworkLightSet, LightSamplesLandOnTheLightsRectangle) {
+  const Scene s = panel_on_light(0.4f, 0.3f, 10.0f, {0.6f, 0, 0}, {0, 0.8f, 0}, 10.0f);
   const LightSet lights(s);
   ASSERT_EQ(lights.lights().size(), 1u);
   EXPECT_NEAR(lights.lights()[0].area, 0.48f, 1e-6f);
@@ -281,31 +274,114 @@ TEST(FrameworkLightSet, ThePanelIsWhatIsSampledAndWhatIsSeen) {
     const LightSample ls = lights.sample(0, below, rng.next_2d());
     ASSERT_GT(ls.pdf, 0.0f);
     EXPECT_EQ(ls.L, glm::vec3(10.0f));
-    ASSERT_LE(std::abs(ls.p.x), 0.4f + 1e-6f);
-    ASSERT_LE(std::abs(ls.p.y), 0.3f + 1e-6f);
+    ASSERT_LE(std::abs(ls.p.x), 0.3f + 1e-6f) << "the light is 0.6 across x";
+    ASSERT_LE(std::abs(ls.p.y), 0.4f + 1e-6f);
     EXPECT_EQ(ls.p.z, 1.0f);
+    const float d = ls.distance;
+    EXPECT_NEAR(ls.pdf, d * d / (0.48f * ls.wi.z), 1e-4f * ls.pdf);
     reached_x = std::max(reached_x, std::abs(ls.p.x));
     reached_y = std::max(reached_y, std::abs(ls.p.y));
   }
-  EXPECT_GT(reached_x, 0.39f) << "the samples cover the panel's width, not the light's 0.3";
-  EXPECT_LT(reached_y, 0.3f + 1e-6f) << "and never the light's 0.4";
+  EXPECT_GT(reached_y, 0.39f) << "the samples cover the light's 0.8 along y, not the panel's 0.6";
+  EXPECT_LT(reached_x, 0.3f + 1e-6f) << "and never the panel's 0.4 along x";
+}
 
-  // A ray from `below` up to the panel's point (0.35, 0.1): outside the light, inside the panel.
-  const glm::vec3 q(0.35f, 0.1f, 1.0f);
-  const glm::vec3 wi = glm::normalize(q - below.p);
+// The course's CBspheres_lambertian as its loader reads it: the area light's rectangle (0.6 along
+// x, 0.8 along y, at z = 1.49, shining down; its panel is 0.8 × 0.6) is where light samples land,
+// with the light's radiance, and one warning names the light.
+TEST(FrameworkLightSet, ACourseScenesLightSamplesLandOnTheAreaLightsRectangle) {
+  const std::string path =
+      std::string(test::shared_scenes_dir()) + "/sky/CBspheres_lambertian.dae";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "the course scenes are not at " << path;
+  const Scene s = load_collada(path, [](const std::string&) {});
+  ASSERT_EQ(s.lights.size(), 1u);
+  const Light& area = s.lights[0];
+  ASSERT_EQ(area.kind, LightKind::area);
+  EXPECT_NEAR(glm::length(area.edge_u), 0.6f, 1e-5f);
+  EXPECT_NEAR(glm::length(area.edge_v), 0.8f, 1e-5f);
+  const LightSet lights(s);
+  ASSERT_EQ(lights.lights().size(), 1u);
+  ASSERT_EQ(lights.warnings().size(), 1u);
+  SurfaceHit floor;
+  floor.p = glm::vec3(0.2f, 0.1f, 0.0f);
+  Rng rng(5);
+  float reached_x = 0.0f, reached_y = 0.0f;
+  for (int i = 0; i < 4000; ++i) {
+    const LightSample ls = lights.sample(0, floor, rng.next_2d());
+    ASSERT_GT(ls.pdf, 0.0f);
+    EXPECT_EQ(ls.L, area.radiance);
+    const glm::vec3 d = ls.p - area.position;
+    ASSERT_LE(std::abs(d.x), 0.3f + 1e-5f) << "x " << ls.p.x;
+    ASSERT_LE(std::abs(d.y), 0.4f + 1e-5f) << "y " << ls.p.y;
+    ASSERT_NEAR(d.z, 0.0f, 1e-5f);
+    reached_x = std::max(reached_x, std::abs(d.x));
+    reached_y = std::max(reached_y, std::abs(d.y));
+  }
+  EXPECT_GT(reached_y, 0.39f) << "the light's 0.8 along y, not its panel's 0.6";
+  EXPECT_GT(reached_x, 0.29f);
+}
+
+// The same light and panel, by ray: the camera (or a mirror) that hits the panel sees the light's
+// radiance from below, nothing from above, even where only the panel is; a ray traced from a lit
+// point for its direct light (emitted_along) receives the light where it crosses the light's
+// rectangle, before anything but the panel, and pdf() is the light sample's density there.
+TEST(FrameworkLightSet, TheCameraSeesThePanelAndLitPointsReachTheRectangle) {
+  const Scene s = panel_on_light(0.4f, 0.3f, 10.0f, {0.6f, 0, 0}, {0, 0.8f, 0}, 10.0f);
+  const LightSet lights(s);
+  SurfaceHit below;
+  below.p = glm::vec3(0.3f, -0.1f, 0.0f);
+  auto ray_to = [&](const glm::vec3& q) {
+    Ray r;
+    r.o = below.p;
+    r.d = glm::normalize(q - below.p);
+    return r;
+  };
   const int k = lights.light_of_primitive(0);
   ASSERT_EQ(k, 0);
   EXPECT_EQ(lights.light_of_primitive(1), 0);
-  const SurfaceHit on_panel = panel_hit(q, 0);
-  EXPECT_EQ(lights.emitted(k, on_panel, wi), glm::vec3(10.0f));
-  const float d = glm::length(q - below.p);  // the panel faces down: cosθ at it is wi.z
-  EXPECT_NEAR(lights.pdf(k, below, wi, &on_panel), d * d / (0.48f * wi.z), 1e-4f);
-  // From above the panel (its back): no light, and no density.
+
+  // (0.35, 0.1): on the panel, off the light's rectangle.
+  const glm::vec3 q(0.35f, 0.1f, 1.0f);
+  const Ray r = ray_to(q);
+  SurfaceHit on_panel = panel_hit(q, 0);
+  on_panel.t = glm::length(q - below.p);
+  EXPECT_EQ(lights.emitted(k, on_panel, r.d), glm::vec3(10.0f)) << "the camera sees the panel";
+  EXPECT_EQ(lights.emitted_along(k, r, &on_panel), glm::vec3(0.0f))
+      << "no light arrives from where only the panel is";
+  EXPECT_EQ(lights.pdf(k, below, r.d, &on_panel), 0.0f) << "and no light sample comes from there";
+
+  // (0.1, 0.35): on the rectangle, off the panel (a ray there hits what lies beyond, or nothing).
+  const glm::vec3 q2(0.1f, 0.35f, 1.0f);
+  const Ray r2 = ray_to(q2);
+  const float d2 = glm::length(q2 - below.p);
+  EXPECT_EQ(lights.emitted_along(k, r2, nullptr), glm::vec3(10.0f));
+  SurfaceHit ceiling;
+  ceiling.t = d2 * 1.01f;
+  ceiling.primitive = 7;
+  EXPECT_EQ(lights.emitted_along(k, r2, &ceiling), glm::vec3(10.0f)) << "the ceiling lies beyond";
+  SurfaceHit blocker;
+  blocker.t = d2 * 0.5f;
+  blocker.primitive = 7;
+  EXPECT_EQ(lights.emitted_along(k, r2, &blocker), glm::vec3(0.0f)) << "something nearer hides it";
+  EXPECT_NEAR(lights.pdf(k, below, r2.d, nullptr), d2 * d2 / (0.48f * r2.d.z), 1e-4f);
+  EXPECT_EQ(lights.radiance_along(r2, nullptr), glm::vec3(10.0f));
+
+  // (0.1, 0.1): on both; the panel does not hide its own light.
+  const glm::vec3 q3(0.1f, 0.1f, 1.0f);
+  const Ray r3 = ray_to(q3);
+  SurfaceHit on_both = panel_hit(q3, 0);
+  on_both.t = glm::length(q3 - below.p);
+  EXPECT_EQ(lights.emitted_along(k, r3, &on_both), glm::vec3(10.0f));
+
+  // From above (the back): nothing by any view, and no density.
   SurfaceHit above;
-  above.p = glm::vec3(0.3f, 0.1f, 1.5f);
-  const glm::vec3 down = glm::normalize(q - above.p);
-  EXPECT_EQ(lights.emitted(k, on_panel, down), glm::vec3(0.0f));
-  EXPECT_EQ(lights.pdf(k, above, down, &on_panel), 0.0f);
+  above.p = glm::vec3(0.1f, 0.1f, 1.5f);
+  Ray down;
+  down.o = above.p;
+  down.d = glm::normalize(q3 - above.p);
+  EXPECT_EQ(lights.emitted(k, on_both, down.d), glm::vec3(0.0f));
+  EXPECT_EQ(lights.emitted_along(k, down, &on_both), glm::vec3(0.0f));
+  EXPECT_EQ(lights.pdf(k, above, down.d, &on_both), 0.0f);
   EXPECT_EQ(lights.sample(0, above, {0.3f, 0.6f}).pdf, 0.0f);
 }
 
@@ -323,12 +399,12 @@ TEST(FrameworkLightSet, AnAreaLightWithoutAPanelCannotBeHit) {
 }
 
 
-/// A sample of quad panel `l` as its definition computes it in glm: the parallelogram's point
-/// corner + u.x·edge_u + u.y·edge_v, its error box widened by quad_slack, the first triangle's
-/// normal, the light's 1 / area.
+/// A sample of panel light `l` as its definition computes it in glm: the parallelogram's point
+/// corner + u.x·edge_u + u.y·edge_v, its error box widened by quad_slack, the light's normal,
+/// its 1 / area.
 LightSample quad_sample_by_definition(const SampledLight& l, const glm::vec3& p, glm::vec2 u) {
   LightSample ls = surface_sample_by_definition(l, p, l.corner, u.x * l.edge_u, u.y * l.edge_v,
-                                                l.sampled_triangles[0].n, true);
+                                                l.normal, true);
   if (ls.distance < std::numeric_limits<float>::infinity())  // a sample was made
     ls.p_error += l.quad_slack;
   return ls;
@@ -347,9 +423,10 @@ Scene two_triangle_panel(const glm::vec3& a, const glm::vec3& b, const glm::vec3
   return s;
 }
 
-// A panel of two triangles that tile a parallelogram (every course light's) is sampled on that
-// parallelogram; anything else (a trapezoid, triangles that share no edge, three triangles) keeps
-// picking a triangle. The parallelogram found is the panel's own: its corners are the panel's.
+// A panel of two triangles that tile its light's parallelogram (every course light's where the
+// two agree) is sampled on the panel's own parallelogram: its corners are the panel's. Any other
+// panel (a trapezoid, triangles that share no edge, three triangles, another shape) is sampled on
+// the light's rectangle.
 TEST(FrameworkLightSet, AQuadPanelIsSampledAsItsParallelogram) {
   {
     const LightSet lights(panel_on_light(0.4f, 0.3f, 10.0f, {0.8f, 0, 0}, {0, 0.6f, 0}, 10.0f));
@@ -361,22 +438,28 @@ TEST(FrameworkLightSet, AQuadPanelIsSampledAsItsParallelogram) {
     EXPECT_EQ(l.corner + l.edge_v, glm::vec3(-0.4f, -0.3f, 1.0f));
     EXPECT_LT(glm::length(l.quad_slack), 1e-6f);
   }
+  const glm::vec3 light_corner(-0.4f, -0.3f, 1.0f);
   Scene trapezoid = panel_on_light(0.4f, 0.3f, 10.0f, {0.8f, 0, 0}, {0, 0.6f, 0}, 10.0f);
   trapezoid.positions[3].x = -0.2f;
-  EXPECT_FALSE(LightSet(trapezoid).lights().at(0).quad);
+  EXPECT_EQ(LightSet(trapezoid).lights().at(0).corner, light_corner);
   Scene apart = panel_on_light(0.4f, 0.3f, 10.0f, {0.8f, 0, 0}, {0, 0.6f, 0}, 10.0f);
   apart.positions.push_back(apart.positions[0]);  // the same place, another vertex: no shared edge
   apart.positions.push_back(apart.positions[2]);
   apart.triangles[1] = Triangle{{4, 5, 3}, 0};
-  EXPECT_TRUE(LightSet(apart).lights().at(0).quad) << "a shared edge is shared by position";
+  EXPECT_EQ(LightSet(apart).lights().at(0).corner, glm::vec3(0.4f, -0.3f, 1.0f))
+      << "a shared edge is shared by position";
   apart.positions[5].x += 1e-3f;  // now the two meet at one corner only
-  EXPECT_FALSE(LightSet(apart).lights().at(0).quad);
+  EXPECT_EQ(LightSet(apart).lights().at(0).corner, light_corner);
   Scene three = panel_on_light(0.4f, 0.3f, 10.0f, {0.8f, 0, 0}, {0, 0.6f, 0}, 10.0f);
   three.positions.push_back({-0.2f, 0.1f, 1.0f});
   three.triangles[1] = Triangle{{0, 2, 4}, 0};
   three.triangles.push_back(Triangle{{4, 2, 3}, 0});
   three.triangles.push_back(Triangle{{0, 4, 3}, 0});
-  EXPECT_FALSE(LightSet(three).lights().at(0).quad);
+  EXPECT_EQ(LightSet(three).lights().at(0).corner, light_corner);
+  EXPECT_EQ(LightSet(panel_on_light(0.4f, 0.3f, 10.0f, {0.6f, 0, 0}, {0, 0.8f, 0}, 10.0f))
+                .lights().at(0).corner,
+            glm::vec3(-0.3f, -0.4f, 1.0f))
+      << "a panel turned round on its light: the light's rectangle";
 }
 
 // Every field of every quad sample is its definition's, to the bit, from points all around the

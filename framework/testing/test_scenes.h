@@ -133,15 +133,16 @@ inline void add_square_ceiling_light(Scene& s, float half, float z, const glm::v
 
 /// CBcoil's situation in miniature: a floor (albedo 0.5, z = 0) under a panel of emission 10,
 /// 0.8 × 0.6 at z = 0.5, that lies on an area light of radiance 5 turned the other way round
-/// (0.6 × 0.8), shining down. The emitter rule makes them one emitter: the panel's shape with
-/// the light's radiance.
+/// (0.6 × 0.8), shining down. By the emitter rule the light's rectangle with its radiance lights
+/// the floor, and the camera sees the panel's shape glowing with the light's radiance.
 struct DisagreeingPanel {
   static constexpr float kHeight = 0.5f, kPanelX = 0.4f, kPanelY = 0.3f;  // half sizes
   static constexpr float kLightRadiance = 5.0f, kPanelEmission = 10.0f, kFloorAlbedo = 0.5f;
-  /// Direct light the floor reflects at (x, y): ρ·L·F over the panel's rectangle.
+  /// Direct light the floor reflects at (x, y): ρ·L·F over the light's own rectangle (kPanelY
+  /// across x, kPanelX across y), which lights the scene whatever the panel's shape.
   static double floor_radiance(double x, double y) {
     return kFloorAlbedo * kLightRadiance *
-           rectangle_form_factor(-kPanelX - x, kPanelX - x, -kPanelY - y, kPanelY - y, kHeight);
+           rectangle_form_factor(-kPanelY - x, kPanelY - x, -kPanelX - y, kPanelX - y, kHeight);
   }
 };
 inline Scene disagreeing_panel_scene(MaterialKind floor_kind = MaterialKind::diffuse) {

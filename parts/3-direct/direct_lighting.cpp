@@ -19,7 +19,8 @@ glm::vec3 zero_bounce_radiance(const LightingContext& ctx, const Ray& ray, const
   // that the camera sees exactly the emitter that light sampling samples. Find the light the
   // hit belongs to (ctx.lights.light_of_primitive(hit.primitive); -1: the surface emits
   // nothing) and return ctx.lights.emitted(light, hit, ray.d): an area light's panel glows with
-  // its light's radiance, on the light's side only.
+  // its light's radiance, on the light's side only. (This is what the camera, a mirror or glass
+  // sees; the light a point receives is its light's own rectangle, which light sampling samples.)
   PT_STUDENT_TODO("part 3", "zero_bounce_radiance");
   (void)ctx, (void)ray, (void)hit;
   return glm::vec3(0.0f);
@@ -33,16 +34,16 @@ glm::vec3 estimate_direct_hemisphere(const LightingContext& ctx, const ShadingPo
     glm::vec3 wi = square_to_uniform_hemisphere(rng.next_2d());
     Ray r = spawn_ray(sp.hit, sp.frame.to_world(wi));
     SurfaceHit h;
-    glm::vec3 Le = ctx.query.intersect(r, &h) ? zero_bounce_radiance(ctx, r, h)
-                                              : ctx.lights.environment_radiance(r.d);
+    const glm::vec3 Le = ctx.lights.radiance_along(r, ctx.query.intersect(r, &h) ? &h : nullptr);
     sum += sp.bsdf->f(sp.wo, wi) * Le * wi.z / uniform_hemisphere_pdf(wi);
   }
   return sum / float(n);
   // END SOLUTION
   // STUDENT: ctx.light_samples times: draw wi = square_to_uniform_hemisphere(rng.next_2d()) in the
-  // local frame, shoot spawn_ray(sp.hit, sp.frame.to_world(wi)); what it sees is the
-  // zero_bounce_radiance of its hit, or ctx.lights.environment_radiance(direction) if it escapes.
-  // Add f(wo, wi)·Le·cosθ / pdf and return the average.
+  // local frame, shoot spawn_ray(sp.hit, sp.frame.to_world(wi)) and intersect it; the light it
+  // brings back is ctx.lights.radiance_along(ray, &hit), or (ray, nullptr) if it escapes: the
+  // lights as light sampling samples them (an area light's own rectangle, not the panel the
+  // camera sees). Add f(wo, wi)·Le·cosθ / pdf and return the average.
   PT_STUDENT_TODO("part 3", "estimate_direct_hemisphere");
   (void)ctx, (void)sp, (void)rng;
   return glm::vec3(0.0f);

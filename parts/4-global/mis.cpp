@@ -44,7 +44,7 @@ glm::vec3 estimate_direct_mis(const LightingContext& ctx, const ShadingPoint& sp
     }
     L += sum / float(n);
   }
-  // BSDF samples: each ray reaches at most one light (or every environment light at once).
+  // BSDF samples: each ray brings back what every light it reaches sends along it.
   glm::vec3 sum(0.0f);
   for (int j = 0; j < ns; ++j) {
     glm::vec3 wi;
@@ -53,19 +53,15 @@ glm::vec3 estimate_direct_mis(const LightingContext& ctx, const ShadingPoint& sp
     if (!(pdf_b > 0.0f) || !(wi.z > 0.0f) || f == glm::vec3(0.0f)) continue;
     Ray r = spawn_ray(sp.hit, sp.frame.to_world(wi));
     SurfaceHit h;
-    auto add = [&](int k, const SurfaceHit* on_light) {
+    const SurfaceHit* hit = ctx.query.intersect(r, &h) ? &h : nullptr;
+    for (int k = 0; k < int(lights.size()); ++k) {
+      if (!lights[k].can_be_hit()) continue;
+      const glm::vec3 Le = ctx.lights.emitted_along(k, r, hit);
+      if (Le == glm::vec3(0.0f)) continue;
+      float pdf_l = ctx.lights.pdf(k, sp.hit, r.d, hit);
+      if (!(pdf_l > 0.0f)) continue;  // a ray the light's own samples could never produce
       int n = lights[k].is_delta() ? 1 : ns;
-      float pdf_l = ctx.lights.pdf(k, sp.hit, r.d, on_light);
-      if (!(pdf_l > 0.0f)) return;  // a ray the light's own samples could never produce
-      glm::vec3 Le = on_light ? ctx.lights.emitted(k, *on_light, r.d) : ctx.lights.emitted(k, h, r.d);
       sum += f * Le * wi.z * (power_heuristic(ns, pdf_b, n, pdf_l) / pdf_b);
-    };
-    if (ctx.query.intersect(r, &h)) {
-      int k = ctx.lights.light_of_primitive(h.primitive);
-      if (k >= 0 && lights[k].can_be_hit()) add(k, &h);
-    } else {
-      for (int k = 0; k < int(lights.size()); ++k)
-        if (lights[k].is_infinite()) add(k, nullptr);
     }
   }
   return L + sum / float(ns);
@@ -73,9 +69,10 @@ glm::vec3 estimate_direct_mis(const LightingContext& ctx, const ShadingPoint& sp
   // STUDENT: zero for a specular BSDF. Light samples as in estimate_direct_importance, each
   // weighted by power_heuristic(n, ls.pdf, ns, sp.bsdf->pdf(sp.wo, wi)) where a ray can hit the
   // light (lights[k].can_be_hit(); else weight 1); then ns = ctx.light_samples BSDF samples
-  // (sp.bsdf->sample_f), each ray's light (ctx.lights.light_of_primitive of its hit, when that
-  // light can_be_hit(), or every infinite light when it escapes) weighted by
-  // power_heuristic(ns, pdf_bsdf, n, ctx.lights.pdf(...)) times ctx.lights.emitted(...).
+  // (sp.bsdf->sample_f), each ray intersected once; for every light k that can_be_hit(), what it
+  // sends along the ray (ctx.lights.emitted_along(k, ray, &hit), or nullptr if the ray escapes:
+  // an area light's rectangle, as its light samples are drawn) weighted by
+  // power_heuristic(ns, pdf_bsdf, n, ctx.lights.pdf(k, ...)).
   // Until then it returns no light (a stand-in that returned Part 3's estimate would pass the
   // step's known-answer checks without a line of MIS).
   PT_STUDENT_TODO("part 4", "estimate_direct_mis");
