@@ -1,5 +1,6 @@
 #include "app/viewer/render_session.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -200,6 +201,20 @@ void RenderSession::cancel() {
     t = std::move(thread_);
   }
   if (t.joinable()) t.join();
+}
+
+void RenderSession::wait_for_pixels(long pixels, int limit_ms) const {
+  std::shared_ptr<Job> job;
+  {
+    std::lock_guard lock(job_mutex_);
+    job = job_;
+  }
+  if (!job) return;
+  const long wanted = std::min<long>(pixels, job->region.area());
+  const auto until = Clock::now() + std::chrono::milliseconds(limit_ms);
+  // A short sleep rather than a signal from every pixel: the wait is once per render.
+  while (job->phase.load() == Phase::rendering && job->done.load() < wanted && Clock::now() < until)
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
 }
 
 void RenderSession::start(const std::vector<std::string>& flags) {

@@ -51,6 +51,10 @@ class RenderSession {
   void start(const std::vector<std::string>& flags);
   /// Stops the render in flight, if any, and waits for its threads.
   void cancel();
+  /// Waits until the render in flight has finished `pixels` pixels (or all of its region), has
+  /// ended, or `limit_ms` has passed: the page's first image is then one request away, rather
+  /// than a status poll and a request.
+  void wait_for_pixels(long pixels, int limit_ms) const;
 
   /// The state for the page: "empty" (no scene), "idle", "rendering", "done", "cancelled" or
   /// "error", with the progress, the summary line, the command line and any error.

@@ -11,6 +11,7 @@
 #include <httplib.h>
 
 #include "app/viewer/sampling_check.h"
+#include "framework/render/tile_renderer.h"
 
 namespace pt {
 
@@ -226,6 +227,10 @@ void ViewerServer::routes() {
   });
   s.Post("/api/render", [this](const httplib::Request& req, httplib::Response& res) {
     session_->start(request_flags(request_json(req)));
+    // The reply waits for a first tile's worth of pixels, up to a second, so the page draws its
+    // first image as soon as it reads this reply.
+    const long tile = TileRenderOptions{}.tile_size;
+    session_->wait_for_pixels(tile * tile, 1000);
     send_json(res, session_->status());
   });
   s.Post("/api/cancel", [this](const httplib::Request&, httplib::Response& res) {
