@@ -42,8 +42,9 @@ class RenderSession {
   ~RenderSession();
 
   /// (Re)reads the scene file, after stopping a render in flight. On failure the message (file,
-  /// element, what is wrong) is kept for status() and returned in *error.
-  bool load(std::string* error);
+  /// element, what is wrong) is kept for status() and returned in *error. With `warm_up`, the
+  /// first render's tree (the student's Part 2) is built now rather than when it is asked for.
+  bool load(std::string* error, bool warm_up = true);
 
   /// Starts a render with these flags, stopping the one in flight (its pixels stay on the page
   /// until new ones replace them). A -p cell renders again only the cell, over the last image
