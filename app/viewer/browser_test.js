@@ -161,7 +161,15 @@ async function explore(a, page, context, s, port, shoot, problems) {
   // The handout's stub pixel loop takes no sample: the page says so, and there is nothing to list.
   const wanted = a.handout ? Math.min(explained.calls, 64) : Math.min(spp, 64);
   if (explained.samples.length !== wanted) problems.push(`pixel: ${explained.samples.length} samples listed, -s ${spp}`);
-  if (explained.samples.length && (!explained.samples[0].rays.length || explained.samples[0].rays[0].kind !== 'trace')) problems.push('pixel: the first ray is not the camera ray');
+  // A handout whose integrator is a stub traces nothing: the page must then say what is not
+  // written, beside the pixel.
+  const rays = explained.samples.length ? explained.samples[0].rays : [];
+  if (rays.length ? rays[0].kind !== 'trace' : explained.samples.length && !a.handout) problems.push('pixel: the first ray is not the camera ray');
+  if (a.handout) {
+    const said = await page.evaluate(() => [...document.querySelectorAll('.stubs')].filter((e) => !e.hidden).map((e) => e.textContent));
+    if (!said.length || !said.every((t) => /Not written yet/.test(t))) problems.push('handout: the page does not say what is not written yet');
+    else console.log(`handout: the page says, beside the render: ${said[0].split('\n').slice(1).join(';')}`);
+  }
   const shown = (await pagePixels(page)).px;
   const at = 4 * (explained.y * cell.width + explained.x);
   const enc = (v) => Math.round(255 * (v <= 0.0031308 ? 12.92 * v : 1.055 * Math.pow(v, 1 / 2.4) - 0.055));

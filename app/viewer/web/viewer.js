@@ -19,6 +19,7 @@ const state = {
   pixel: null,
   sizeGiven: false,    // the viewer's command line named the image's size (-r)
   unreachable: false,  // the last status request went unanswered
+  stubs: new Map(),    // "part N: NAME" -> FILE:LINE, for each stub the student's code ran
   times: { requested: 0, firstImage: 0, imagesDrawn: 0 },
 };
 window.viewerState = state;  // read by the browser test
@@ -126,6 +127,7 @@ function onStatus(s) {
     const log = $('log');
     log.textContent += s.log.join('\n') + '\n';
     log.scrollTop = log.scrollHeight;
+    noteStubs(s.log);
   }
   if (s.log_next !== undefined) state.logNext = s.log_next;
   if (s.command) $('command').textContent = s.command;
@@ -149,6 +151,28 @@ function onStatus(s) {
   }
   if (s.state === 'cancelled') text = 'stopped';
   $('summary').textContent = text;
+}
+
+// ---- what is not written yet ------------------------------------------------------------------
+
+/// The stubs' lines ("part 3 not implemented: NAME at FILE:LINE (see ...)"), said in each panel
+/// they matter to, so a black image or an empty table says why where the student looks.
+function noteStubs(lines) {
+  let added = false;
+  for (const line of lines) {
+    const m = /^part (\d) not implemented: (.+) at (\S+)/.exec(line);
+    if (!m || state.stubs.has(`${m[1]}|${m[2]}`)) continue;
+    state.stubs.set(`${m[1]}|${m[2]}`, { part: m[1], name: m[2], where: m[3] });
+    added = true;
+  }
+  if (!added) return;
+  for (const box of document.querySelectorAll('.stubs')) {
+    const stubs = [...state.stubs.values()].filter((s) => box.dataset.parts.includes(s.part))
+      .sort((a, b) => a.part - b.part);
+    box.hidden = !stubs.length;
+    box.textContent = 'Not written yet (each returns a neutral value, so what depends on it is black, empty or fails):\n' +
+      stubs.map((s) => `  part ${s.part}: ${s.name} in ${s.where}`).join('\n');
+  }
 }
 
 let pollTimer = null;
