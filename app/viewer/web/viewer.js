@@ -19,6 +19,7 @@ const state = {
   pixel: null,
   sizeGiven: false,    // the viewer's command line named the image's size (-r)
   unreachable: false,  // the last status request went unanswered
+  lastImageAt: 0,      // when the last image was asked for (performance.now())
   stubs: new Map(),    // "part N: NAME" -> FILE:LINE, for each stub the student's code ran
   times: { requested: 0, firstImage: 0, imagesDrawn: 0 },
 };
@@ -135,7 +136,11 @@ function onStatus(s) {
   const job = `${s.command}|${s.region}`;
   if (s.total) $('progress').style.width = `${Math.round(480 * s.done / s.total)}px`;
   const finished = s.state === 'done' || s.state === 'cancelled' || s.state === 'error';
-  if (s.done !== undefined && (s.done !== state.shownDone || job !== state.shownJob || finished && state.lastState === 'rendering')) {
+  // While it renders, after the first image, a new image at most every half second: each is the
+  // whole RGBA image, and the browser's decoding and drawing take the cores the render needs.
+  const recent = s.state === 'rendering' && state.times.firstImage && performance.now() - state.lastImageAt < 500;
+  if (s.done !== undefined && !recent && (s.done !== state.shownDone || job !== state.shownJob || finished && state.lastState === 'rendering')) {
+    state.lastImageAt = performance.now();
     state.shownJob = job;
     refreshImage(s);
   }
