@@ -1,5 +1,6 @@
 #include "app/viewer/render_session.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -10,6 +11,7 @@
 #include "app/camera_view.h"
 #include "app/pixel_function.h"
 #include "app/radiance.h"
+#include "app/viewer/crash_witness.h"
 #include "app/viewer/pixel_paths.h"
 #include "framework/image/image.h"
 #include "framework/render/sample_rate.h"
@@ -54,6 +56,13 @@ std::string shell_word(const std::string& s) {
   std::string out = "'";
   for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return out + "'";
+}
+
+/// The pathtracer command that renders what the page asked for.
+std::string pathtracer_command(const std::vector<std::string>& flags, const std::string& scene) {
+  std::string command = "pathtracer";
+  for (const std::string& f : flags) command += " " + shell_word(f);
+  return command + " " + shell_word(scene);
 }
 
 }  // namespace
@@ -112,7 +121,7 @@ RenderSession::RenderSession(std::string scene_path, int threads)
 
 RenderSession::~RenderSession() { cancel(); }
 
-bool RenderSession::load(std::string* error) {
+bool RenderSession::load(std::string* error, bool warm_up) {
   cancel();
   std::unique_lock lock(scene_mutex_);
   {
@@ -130,6 +139,7 @@ bool RenderSession::load(std::string* error) {
     load_error_.clear();
     // The first render should not wait for what every render needs: the render's threads and
     // the tree the default flags ask for are made now, while the page loads.
+    if (!warm_up) return true;
     RenderSettings defaults;
     defaults.threads = threads_;
     start_render_threads(defaults);
@@ -202,6 +212,20 @@ void RenderSession::cancel() {
   if (t.joinable()) t.join();
 }
 
+void RenderSession::wait_for_pixels(long pixels, int limit_ms) const {
+  std::shared_ptr<Job> job;
+  {
+    std::lock_guard lock(job_mutex_);
+    job = job_;
+  }
+  if (!job) return;
+  const long wanted = std::min<long>(pixels, job->region.area());
+  const auto until = Clock::now() + std::chrono::milliseconds(limit_ms);
+  // A short sleep rather than a signal from every pixel: the wait is once per render.
+  while (job->phase.load() == Phase::rendering && job->done.load() < wanted && Clock::now() < until)
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+}
+
 void RenderSession::start(const std::vector<std::string>& flags) {
   ViewerRender render = parse_viewer_flags(flags, scene_path_, threads_);
   cancel();
@@ -239,6 +263,11 @@ void RenderSession::start(const std::vector<std::string>& flags) {
 void RenderSession::run(std::shared_ptr<Job> job) {
   std::shared_lock lock(scene_mutex_);
   const RenderSettings& s = job->render.command.settings;
+  // A crash on the render's threads is told as this render.
+  set_render_activity("rendered: " + pathtracer_command(job->render.flags, scene_path_));
+  struct Told {
+    ~Told() { set_render_activity(""); }
+  } told;
   try {
     const Scene& scene = *scene_;
     const RayQuery& query = render_query(s);
@@ -331,9 +360,7 @@ nlohmann::json RenderSession::status() const {
                        : job->seconds;
   out["first_pixel_seconds"] = job->first_pixel_seconds.load();
   out["adaptive"] = s.adaptive;
-  std::string command = "pathtracer";
-  for (const std::string& f : job->render.flags) command += " " + shell_word(f);
-  out["command"] = command + " " + shell_word(scene_path_);
+  out["command"] = pathtracer_command(job->render.flags, scene_path_);
   out["flags"] = job->render.flags;
   if (phase == Phase::done) {
     out["summary"] = job->summary;

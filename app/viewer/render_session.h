@@ -42,8 +42,9 @@ class RenderSession {
   ~RenderSession();
 
   /// (Re)reads the scene file, after stopping a render in flight. On failure the message (file,
-  /// element, what is wrong) is kept for status() and returned in *error.
-  bool load(std::string* error);
+  /// element, what is wrong) is kept for status() and returned in *error. With `warm_up`, the
+  /// first render's tree (the student's Part 2) is built now rather than when it is asked for.
+  bool load(std::string* error, bool warm_up = true);
 
   /// Starts a render with these flags, stopping the one in flight (its pixels stay on the page
   /// until new ones replace them). A -p cell renders again only the cell, over the last image
@@ -51,6 +52,10 @@ class RenderSession {
   void start(const std::vector<std::string>& flags);
   /// Stops the render in flight, if any, and waits for its threads.
   void cancel();
+  /// Waits until the render in flight has finished `pixels` pixels (or all of its region), has
+  /// ended, or `limit_ms` has passed: the page's first image is then one request away, rather
+  /// than a status poll and a request.
+  void wait_for_pixels(long pixels, int limit_ms) const;
 
   /// The state for the page: "empty" (no scene), "idle", "rendering", "done", "cancelled" or
   /// "error", with the progress, the summary line, the command line and any error.

@@ -18,6 +18,7 @@
 
 #include "app/cli_parse.h"
 #include "app/command_line.h"
+#include "app/viewer/crash_witness.h"
 #include "app/viewer/render_session.h"
 #include "app/viewer/terminal_log.h"
 #include "app/viewer/viewer_server.h"
@@ -55,14 +56,22 @@ int free_port() {
   return port;
 }
 
+/// What a server that crashes while it starts was doing.
+constexpr const char* kStartingUp = "read the scene and built the first render's tree (Part 2)";
+
 /// One server's life: load the scene, listen, answer. Returns the exit code.
 int serve(const ViewerCommand& c, const std::string& token, const std::string& crash_note,
-          bool announce) {
+          bool announce, bool warm_up) {
   TerminalLog log;
   log.start();
+  // Said here rather than by the supervisor, so that the page's terminal shows it too.
+  if (!crash_note.empty()) std::cerr << "viewer: " << crash_note << std::endl;
   RenderSession session(c.scene, c.threads);
   std::string error;
-  if (!session.load(&error))
+  set_thread_activity(kStartingUp);
+  const bool loaded = session.load(&error, warm_up);
+  set_thread_activity("");
+  if (!loaded)
     std::cerr << "viewer: " << error << " (the page shows it; fix the file and press Reload)"
               << std::endl;
   ViewerServerOptions options;
@@ -100,6 +109,14 @@ void pass_on(int sig) {
 const char* signal_name(int sig) {
   const char* d = strsignal(sig);
   return d ? d : "unknown signal";
+}
+
+/// What the crashed server's witness wrote (install_crash_witness): what it was doing.
+std::string read_witness(int fd) {
+  std::string what;
+  char buffer[256];
+  for (ssize_t n; (n = read(fd, buffer, sizeof buffer)) > 0;) what.append(buffer, size_t(n));
+  return what;
 }
 
 int run(int argc, char** argv) {
@@ -156,39 +173,59 @@ int run(int argc, char** argv) {
 
   if (c.port == 0) c.port = free_port();
   const std::string token = make_token();
-  if (c.no_restart) return serve(c, token, "", true);
+  if (c.no_restart) return serve(c, token, "", true, true);
 
   // A crash in a student's function (a segfault, an abort) ends the process that ran it: the
   // server runs in a child, and this process starts it again on the same port and token, so the
   // page stays where it is and says what happened.
   std::string note;
-  int crashes = 0;
+  std::string again = "gdb --args";  // this viewer, as it was started, without the restarts
+  for (int i = 0; i < argc; ++i) again += " " + std::string(argv[i]);
+  again += " --no-restart";
+  int crashes = 0, recent = 0;
+  bool warm_up = true;
   auto window_start = std::chrono::steady_clock::now();
   for (bool first = true;; first = false) {
     std::cout.flush();
+    int witness[2] = {-1, -1};
+    if (pipe(witness) != 0) witness[0] = witness[1] = -1;
     const pid_t child = fork();
-    if (child < 0) return serve(c, token, "", true);
+    if (child < 0) return serve(c, token, "", true, true);
     if (child == 0) {
       for (int sig : {SIGTERM, SIGINT, SIGHUP}) signal(sig, SIG_DFL);
-      _exit(serve(c, token, note, first));
+      if (witness[0] >= 0) close(witness[0]);
+      install_crash_witness(witness[1]);
+      _exit(serve(c, token, note, first, warm_up));
     }
+    if (witness[1] >= 0) close(witness[1]);
     g_server_pid = child;
     for (int sig : {SIGTERM, SIGINT, SIGHUP}) signal(sig, pass_on);
     int status = 0;
     while (waitpid(child, &status, 0) < 0 && errno == EINTR) {
     }
+    const std::string what = witness[0] >= 0 ? read_witness(witness[0]) : "";
+    if (witness[0] >= 0) close(witness[0]);
     if (WIFEXITED(status)) return WEXITSTATUS(status);
     const int sig = WTERMSIG(status);
     if (sig == SIGINT || sig == SIGTERM || sig == SIGHUP || sig == SIGKILL) return 128 + sig;
     const auto now = std::chrono::steady_clock::now();
-    if (now - window_start > std::chrono::minutes(1)) window_start = now, crashes = 0;
-    note = std::string("the viewer's server crashed (") + signal_name(sig) +
-           ") while it ran your code, most likely in a function you wrote; it was started again. "
-           "To find the line: run the pathtracer with the same flags under gdb (gdb --args "
-           "build/app/pathtracer ...), or the viewer with --no-restart.";
-    std::cerr << "viewer: " << note << std::endl;
-    if (++crashes > 5) {
-      std::cerr << "viewer: it crashed " << crashes << " times in a minute; stopping" << std::endl;
+    if (now - window_start > std::chrono::minutes(1)) window_start = now, recent = 0;
+    ++crashes;
+    // A crash while it built the first render's tree (Part 2) would come again at once: the
+    // next server builds it when the page asks, so the page opens and says what happened.
+    if (what == kStartingUp) warm_up = false;
+    note = std::string("the viewer's server crashed (") + signal_name(sig) + ")" +
+           (what.empty() ? "" : " while it " + what) +
+           ", most likely in a function you wrote; it was started again (crash " +
+           std::to_string(crashes) + "). To find the line, run the viewer under gdb (" + again +
+           "), do the same on the page, and type bt where it stops" +
+           (what.rfind("rendered: ", 0) == 0 ? "; or run that pathtracer command under gdb." : ".");
+    // A crash in a request or a render took the page's asking, and the page's next request
+    // deserves a server; one anywhere else could come again by itself: stop after five.
+    const bool asked = what.rfind("answered ", 0) == 0 || what.rfind("rendered: ", 0) == 0;
+    if (!asked && ++recent > 5) {
+      std::cerr << "viewer: " << note << "\nviewer: it crashed " << recent
+                << " times in a minute; stopping" << std::endl;
       return kExitIoError;
     }
   }

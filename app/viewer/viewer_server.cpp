@@ -10,7 +10,9 @@
 
 #include <httplib.h>
 
+#include "app/viewer/crash_witness.h"
 #include "app/viewer/sampling_check.h"
+#include "framework/render/tile_renderer.h"
 
 namespace pt {
 
@@ -166,6 +168,11 @@ std::string ViewerServer::url() const {
 void ViewerServer::routes() {
   httplib::Server& s = *server_;
   s.set_payload_max_length(kMaxRequestBytes);
+  // One request per connection: a browser sends a request again, unasked, when a connection it
+  // kept open closes without a reply, and a crash in the student's code closes it, so a kept
+  // connection would run the crashing request twice (the second on the server started again).
+  // Over the loopback a new connection costs nothing to speak of.
+  s.set_keep_alive_max_count(1);
 
   // Every request, before it is routed: the Host header must name this server, and the token
   // must come with it (in the query, or in the cookie the first tokened request set).
@@ -196,8 +203,11 @@ void ViewerServer::routes() {
     if (req.has_param("token"))
       res.set_header("Set-Cookie", cookie + "=" + options_.token +
                                        "; Path=/; HttpOnly; SameSite=Strict");
+    // What a crash in this request would be told as (the student's code runs in some of them).
+    set_thread_activity("answered " + req.method + " " + req.path);
     return httplib::Server::HandlerResponse::Unhandled;
   });
+  s.set_post_routing_handler([](const httplib::Request&, httplib::Response&) { set_thread_activity(""); });
 
   // The page's own files, and nothing else: an unknown path is not found, never a file on disk.
   auto serve_file = [this](const httplib::Request& req, httplib::Response& res) {
@@ -226,6 +236,10 @@ void ViewerServer::routes() {
   });
   s.Post("/api/render", [this](const httplib::Request& req, httplib::Response& res) {
     session_->start(request_flags(request_json(req)));
+    // The reply waits for a first tile's worth of pixels, up to a second, so the page draws its
+    // first image as soon as it reads this reply.
+    const long tile = TileRenderOptions{}.tile_size;
+    session_->wait_for_pixels(tile * tile, 1000);
     send_json(res, session_->status());
   });
   s.Post("/api/cancel", [this](const httplib::Request&, httplib::Response& res) {

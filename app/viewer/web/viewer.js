@@ -17,13 +17,25 @@ const state = {
   node: 0,
   level: 0,
   pixel: null,
+  sizeGiven: false,    // the viewer's command line named the image's size (-r)
+  unreachable: false,  // the last status request went unanswered
+  lastImageAt: 0,      // when the last image was asked for (performance.now())
+  stubs: new Map(),    // "part N: NAME" -> FILE:LINE, for each stub the student's code ran
   times: { requested: 0, firstImage: 0, imagesDrawn: 0 },
 };
 window.viewerState = state;  // read by the browser test
 
 async function api(path, body) {
   const options = body === undefined ? {} : { method: 'POST', headers: { 'Content-Type': 'application/json' }, body: JSON.stringify(body) };
-  const r = await fetch(path, options);
+  let r;
+  try {
+    r = await fetch(path, options);
+  } catch (e) {
+    // No reply at all: the server's process ended while it answered (a crash in a part ends it;
+    // the viewer starts it again and says so above), or the viewer was stopped.
+    throw new Error(`${path.split('?')[0]}: no reply from the viewer (${e.message}); if your code crashed, ` +
+      'the red note above and the terminal say so, and the viewer starts again: try again');
+  }
   const type = r.headers.get('Content-Type') || '';
   const data = type.includes('json') ? await r.json() : await r.arrayBuffer();
   if (!r.ok) throw new Error((data && data.error) || `${path}: HTTP ${r.status}`);
@@ -38,11 +50,12 @@ function showError(message) {
 
 // ---- settings as flags --------------------------------------------------------------------
 
-function flags(withCell) {
+/// The page's settings as pathtracer flags; withoutSize leaves -r out (the scene's own size).
+function flags(withCell, withoutSize) {
   const f = ['-s', $('s').value, '-l', $('l').value, '-m', $('m').value];
   if ($('H').checked) f.push('-H');
   if ($('adaptive').checked) f.push('-a', $('batch').value, $('tol').value);
-  f.push('-r', $('w').value, $('h').value);
+  if (!withoutSize) f.push('-r', $('w').value, $('h').value);
   if ($('seed').value !== '0') f.push('--seed', $('seed').value);
   if ($('normals').checked) f.push('--normals');
   if (state.camera) f.push('--camera', state.camera);
@@ -58,7 +71,7 @@ function applyFlags(list) {
     if (f === '-s' || f === '-l' || f === '-m') $(f[1]).value = list[++i];
     else if (f === '-H') $('H').checked = true;
     else if (f === '-a') { $('adaptive').checked = true; $('batch').value = list[++i]; $('tol').value = list[++i]; }
-    else if (f === '-r') { $('w').value = list[++i]; $('h').value = list[++i]; }
+    else if (f === '-r') { $('w').value = list[++i]; $('h').value = list[++i]; state.sizeGiven = true; }
     else if (f === '--seed') $('seed').value = list[++i];
     else if (f === '--camera') state.camera = list[++i];
   }
@@ -66,13 +79,14 @@ function applyFlags(list) {
 
 // ---- render ---------------------------------------------------------------------------------
 
-async function render(withCell) {
+async function render(withCell, withoutSize) {
   showError('');
   if (!withCell) state.cell = null;
   try {
     state.times.requested = performance.now();
     state.times.firstImage = 0;
-    const s = await api('/api/render', { flags: flags(withCell) });
+    // The reply comes when the first tile's pixels are done (or a second has passed).
+    const s = await api('/api/render', { flags: flags(withCell, withoutSize) });
     state.shownDone = -1;
     onStatus(s);
     pollSoon();
@@ -97,7 +111,8 @@ async function refreshImage(s) {
     drawRgba(await api(rate ? '/api/image?kind=rate' : '/api/image'));
     state.shownDone = s.done;
     state.times.imagesDrawn += 1;
-    if (!state.times.firstImage && s.done > 0) state.times.firstImage = performance.now();
+    // The first image: a tile's worth of pixels (32x32) or the whole region, on the canvas.
+    if (!state.times.firstImage && s.done >= Math.min(1024, s.total)) state.times.firstImage = performance.now();
   } catch (e) {
     showError(e.message);
   } finally {
@@ -113,6 +128,7 @@ function onStatus(s) {
     const log = $('log');
     log.textContent += s.log.join('\n') + '\n';
     log.scrollTop = log.scrollHeight;
+    noteStubs(s.log);
   }
   if (s.log_next !== undefined) state.logNext = s.log_next;
   if (s.command) $('command').textContent = s.command;
@@ -120,7 +136,11 @@ function onStatus(s) {
   const job = `${s.command}|${s.region}`;
   if (s.total) $('progress').style.width = `${Math.round(480 * s.done / s.total)}px`;
   const finished = s.state === 'done' || s.state === 'cancelled' || s.state === 'error';
-  if (s.done !== undefined && (s.done !== state.shownDone || job !== state.shownJob || finished && state.lastState === 'rendering')) {
+  // While it renders, after the first image, a new image at most every half second: each is the
+  // whole RGBA image, and the browser's decoding and drawing take the cores the render needs.
+  const recent = s.state === 'rendering' && state.times.firstImage && performance.now() - state.lastImageAt < 500;
+  if (s.done !== undefined && !recent && (s.done !== state.shownDone || job !== state.shownJob || finished && state.lastState === 'rendering')) {
+    state.lastImageAt = performance.now();
     state.shownJob = job;
     refreshImage(s);
   }
@@ -138,14 +158,40 @@ function onStatus(s) {
   $('summary').textContent = text;
 }
 
+// ---- what is not written yet ------------------------------------------------------------------
+
+/// The stubs' lines ("part 3 not implemented: NAME at FILE:LINE (see ...)"), said in each panel
+/// they matter to, so a black image or an empty table says why where the student looks.
+function noteStubs(lines) {
+  let added = false;
+  for (const line of lines) {
+    const m = /^part (\d) not implemented: (.+) at (\S+)/.exec(line);
+    if (!m || state.stubs.has(`${m[1]}|${m[2]}`)) continue;
+    state.stubs.set(`${m[1]}|${m[2]}`, { part: m[1], name: m[2], where: m[3] });
+    added = true;
+  }
+  if (!added) return;
+  for (const box of document.querySelectorAll('.stubs')) {
+    const stubs = [...state.stubs.values()].filter((s) => box.dataset.parts.includes(s.part))
+      .sort((a, b) => a.part - b.part);
+    box.hidden = !stubs.length;
+    box.textContent = 'Not written yet (each returns a neutral value, so what depends on it is black, empty or fails):\n' +
+      stubs.map((s) => `  part ${s.part}: ${s.name} in ${s.where}`).join('\n');
+  }
+}
+
 let pollTimer = null;
 async function poll() {
   clearTimeout(pollTimer);
   pollTimer = null;
   try {
-    onStatus(await api(`/api/status?log=${state.logNext}`));
+    const s = await api(`/api/status?log=${state.logNext}`);
+    if (state.unreachable) showError('');
+    state.unreachable = false;
+    onStatus(s);
   } catch (e) {
-    showError(`the viewer does not answer (${e.message}): is it still running in its terminal?`);
+    state.unreachable = true;
+    showError('the viewer does not answer: is it still running in its terminal?');
   }
   if (!pollTimer) pollTimer = setTimeout(poll, state.status && state.status.state === 'rendering' ? 100 : 400);
 }
@@ -440,13 +486,16 @@ function useThisView() {
 }
 
 async function start() {
-  preview = new Preview($('preview'));
-  preview.onClick = (x, y) => { if ($('pick-mode').checked) pick(x, y); };
   const s = await api(`/api/status?log=0`);
   $('scene-name').textContent = s.scene;
   if (s.initial_flags) applyFlags(s.initial_flags);
   onStatus(s);
-  poll();
+  // The first render is asked for before anything else: the preview's WebGL and the scene's
+  // triangles are made while it renders. Without -r on the command line it is the scene's own
+  // size, which the preview then takes.
+  const first = s.state === 'empty' ? null : render(false, !state.sizeGiven);
+  preview = new Preview($('preview'));
+  preview.onClick = (x, y) => { if ($('pick-mode').checked) pick(x, y); };
   installImageMouse();
   $('render').onclick = () => render(false);
   $('stop').onclick = () => api('/api/cancel', {}).then(onStatus).catch((e) => showError(e.message));
@@ -462,12 +511,13 @@ async function start() {
   $('bvh-levels').onchange = showBvh;
   $('bvh-up').onclick = () => { state.level -= 1; showBvh(); };
   $('bvh-down').onclick = () => { state.level += 1; showBvh(); };
-  if (s.state === 'empty') return;  // the scene did not load: the message is shown
+  if (!first) { poll(); return; }  // the scene did not load: the message is shown
+  await first;
+  const r = state.status;
+  if (r && r.width) { $('w').value = r.width; $('h').value = r.height; }
+  poll();
   try {
     await loadScene();
-    // The image's size is the scene's default (-r absent) or the one asked for.
-    $('w').value = state.scene.width; $('h').value = state.scene.height;
-    await render(false);
   } catch (e) {
     showError(e.message);
   }
