@@ -1,8 +1,9 @@
 #include "app/camera_view.h"
 
-#include <charconv>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <stdexcept>
 #include <vector>
 
@@ -14,12 +15,16 @@ namespace {
 const char* const kFieldNames[10] = {"px", "py", "pz", "tx", "ty", "tz", "ux", "uy", "uz", "fov"};
 
 float parse_field(const std::string& field, int index) {
-  // strtof accepts leading spaces, hex and "inf"; a field is a plain decimal number here.
-  float v = 0.0f;
-  const char* begin = field.data();
-  const char* end = begin + field.size();
-  const auto r = std::from_chars(begin, end, v);
-  if (field.empty() || r.ec != std::errc() || r.ptr != end)
+  // A field is a plain decimal number: strtof would also take leading spaces, a '+', hexadecimal
+  // and "inf", so only digits, a point, an exponent and signs get that far. strtof, not
+  // from_chars: libc++ (macOS's standard library) has no floating-point from_chars. It reads in
+  // the C locale, which this program never changes.
+  const bool plain = !field.empty() && field[0] != '+' &&
+                     field.find_first_not_of("0123456789.eE+-") == std::string::npos;
+  char* stop = nullptr;
+  errno = 0;
+  const float v = plain ? std::strtof(field.c_str(), &stop) : 0.0f;
+  if (!plain || stop != field.c_str() + field.size() || (errno == ERANGE && v == 0.0f))
     throw std::invalid_argument("--camera: field " + std::to_string(index + 1) + " (" +
                                 kFieldNames[index] + ") '" + field + "' is not a number");
   if (!std::isfinite(v))
