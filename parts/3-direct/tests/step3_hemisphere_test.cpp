@@ -1,7 +1,7 @@
 // Part 3, step 3 (hemisphere): direct light by uniform hemisphere sampling, against scenes whose
 // answer is known. Each test calls estimate_direct_hemisphere itself, at a hit the rig found and
-// shades with its own Lambertian; under a sky (the first two) it rests on nothing else, and where
-// its rays meet an emitter it rests on step 2's zero_bounce_radiance, which it calls for them.
+// shades with its own Lambertian. It rests on no other step: the light its rays meet is the
+// LightSet's (radiance_along), as light sampling samples it.
 #include <gtest/gtest.h>
 
 #include "parts/3-direct/tests/direct_scenes.h"
@@ -40,10 +40,10 @@ TEST(hemisphere, emitter_panels_reflect_nothing_in_a_closed_box) {
   test::expect_emitter_box_reflects_nothing(true);
 }
 
-// CBcoil's panel and its light disagree: the floor under them is lit by the panel's shape with
-// the light's radiance, as light sampling lights it.
-TEST(hemisphere, sees_the_panels_shape_with_its_lights_radiance) {
-  test::expect_floor_sees_the_panels_shape_with_its_lights_radiance(true);
+// CBcoil's panel and its light disagree: the floor under them is lit by the light's own
+// rectangle with its radiance, as light sampling lights it, not by the panel the camera sees.
+TEST(hemisphere, floor_is_lit_by_the_lights_rectangle) {
+  test::expect_floor_lit_by_the_lights_rectangle(true);
 }
 
 }  // namespace

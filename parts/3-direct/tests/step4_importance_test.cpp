@@ -195,10 +195,10 @@ TEST(importance, emitter_panels_reflect_nothing_in_a_closed_box) {
   test::expect_emitter_box_reflects_nothing(false);
 }
 
-// CBcoil's panel and its light disagree: light sampling samples the panel's shape with the
-// light's radiance, not the light's own rectangle.
-TEST(importance, sees_the_panels_shape_with_its_lights_radiance) {
-  test::expect_floor_sees_the_panels_shape_with_its_lights_radiance(false);
+// CBcoil's panel and its light disagree: light sampling samples the light's own rectangle with
+// its radiance, not the panel the camera sees.
+TEST(importance, floor_is_lit_by_the_lights_rectangle) {
+  test::expect_floor_lit_by_the_lights_rectangle(false);
 }
 
 }  // namespace

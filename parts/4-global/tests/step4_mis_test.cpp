@@ -52,10 +52,10 @@ TEST(mis, direct_light_in_a_glowing_enclosure_is_rho_times_e) {
   }
 }
 
-// CBcoil's panel and light disagree (test::disagreeing_panel_scene): MIS's BSDF samples reach the
-// panel and its light samples the same panel, with the light's radiance, so MIS lights the floor
-// as light sampling does: ρ·L·F over the panel's rectangle.
-TEST(mis, sees_the_panels_shape_with_its_lights_radiance) {
+// CBcoil's panel and light disagree (test::disagreeing_panel_scene): MIS's BSDF samples receive
+// the light where they cross its rectangle, which its light samples sample, so MIS lights the
+// floor as light sampling does: ρ·L·F over the light's rectangle, not the panel's.
+TEST(mis, floor_is_lit_by_the_lights_rectangle) {
   using P = test::DisagreeingPanel;
   test::Rig rig(test::disagreeing_panel_scene());
   rig.ctx.light_samples = 4;
