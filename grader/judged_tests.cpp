@@ -176,6 +176,9 @@ JudgedOutcome run_one(const JudgedTest& t, const Sandbox& sandbox, double wall_s
     std::string how = probe.describe();
     o.message += (o.message.empty() ? "" : "\n") + std::string("your code ") + how +
                  (probe.timed_out ? ": an endless loop, or far too slow?" : "");
+    // Why it did not start is the grader's own words (which step of starting it, and errno),
+    // not the student's output.
+    if (!probe.started && !probe.errors.empty()) o.message += " (" + probe.errors + ")";
   }
   if (o.message.empty()) o.message = "failed";
   return o;

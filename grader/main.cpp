@@ -121,6 +121,13 @@ int main(int argc, char** argv) {
   batch->add_option("--max-check-seconds", batch_options.tuning.max_check_seconds,
                     "cap every test's and render's time (a test run)");
   CLI11_PARSE(app, argc, argv);
+  // Tests and renders run in scratch folders of their own, so a folder named relative to where
+  // the grader was started must be made absolute first.
+  // (A --pathtracer without a slash is looked up on PATH, as a shell would.)
+  for (std::string* path : {&options.source_dir, &options.build_dir, &options.pathtracer,
+                            &options.manifest_path, &options.out_dir})
+    if (!path->empty() && (path != &options.pathtracer || path->find('/') != std::string::npos))
+      *path = fs::absolute(*path).lexically_normal().string();
   // The tree graded (--build may name another, a mutant's scratch copy) says whether it has
   // separate isolated targets; the compiled-in answer is this grader's own tree's.
   if (std::optional<bool> separate = has_separate_solution(options.build_dir))
