@@ -1,10 +1,14 @@
-// Part 1, step 5 (watertight): intersect_triangle again, held to the two rules of its header that
-// the renders of later parts need and Part 1's own renders do not show: no ray slips through the
+// Part 1, step 5 (watertight): intersect_triangle again, held to the rules of its header that the
+// renders of later parts need and Part 1's own renders do not show: no ray slips through the
 // crack between two triangles (a ray aimed at a shared edge or vertex of a closed mesh hits one
-// of them, whatever the rounding), and no ray hits the triangle it starts on because of rounding
-// alone (a hit counts only where t exceeds its own error bound). A correct Möller–Trumbore test,
+// of them, whatever the rounding), an edge's side is exact where only its products round, and no
+// ray hits the triangle it starts on because of rounding alone (a hit counts only where t exceeds
+// its own error bound). A correct Möller–Trumbore test,
 // the one most courses teach, passes steps 3-4 and the renders, and loses these points only.
 #include <gtest/gtest.h>
+
+#include <cstdio>
+#include <string>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -74,6 +78,75 @@ TEST(watertight, a_ray_leaving_a_triangle_does_not_hit_it_again) {
                        << " rays leaving a triangle from its hit point hit it again at a t that "
                           "only rounding made: report a hit only where t is above its error bound "
                           "(pbrt-v4, 6.8.7), not above a fixed epsilon";
+}
+
+// Where the ray's frame involves no rounding (the ray leaves (0, 0, 0) along an axis, so moving and
+// shearing the corners is exact), an edge function's only roundings are its two products. Pairs of
+// corners almost in line with the origin make those products round to the same float while their
+// exact difference is not zero: the ray passes a hair beside the edge, on a side exact arithmetic
+// knows. Hit or miss must then be exactly the exact answer; recomputing an edge function that is
+// exactly zero in float in double, where products of floats are exact, is what gives it.
+TEST(watertight, a_ray_a_hair_beside_an_edge_is_on_its_exact_side) {
+  // The sign of a·b - c·d for float factors: their products are exact in double.
+  auto exact_sign = [](float a, float b, float c, float d) {
+    const double p = double(a) * b, q = double(c) * d;
+    return p > q ? 1 : p < q ? -1 : 0;
+  };
+  Rng rng(29);
+  long cases = 0, rays = 0, wrong = 0;
+  std::string first;
+  while (cases < 1000) {
+    const glm::vec2 b(0.5f + 1.5f * rng.next_float(), 0.5f + 1.5f * rng.next_float());
+    const float cx = -(0.5f + 1.5f * rng.next_float());
+    const glm::vec2 c(cx, float(double(b.y) * cx / b.x));  // about on the line from b through 0
+    const float p = b.x * c.y, q = b.y * c.x;
+    if (p != q || exact_sign(b.x, c.y, b.y, c.x) == 0) continue;  // not a hair beside it
+    ++cases;
+    const float s = rng.next_float() < 0.5f ? 1.0f : -1.0f;
+    const glm::vec2 a(-b.y * s, b.x * s);  // well off the line, on a random side
+    const int e0 = exact_sign(b.x, c.y, b.y, c.x), e1 = exact_sign(c.x, a.y, c.y, a.x),
+              e2 = exact_sign(a.x, b.y, a.y, b.x);
+    const bool expected = !((e0 < 0 || e1 < 0 || e2 < 0) && (e0 > 0 || e1 > 0 || e2 > 0));
+    const glm::vec2 corners[3] = {a, b, c};
+    for (int axis = 0; axis < 3; ++axis) {
+      for (float dir : {1.0f, -1.0f}) {
+        auto place = [&](glm::vec2 uv) {
+          glm::vec3 v;
+          v[axis] = dir, v[(axis + 1) % 3] = uv.x, v[(axis + 2) % 3] = uv.y;
+          return v;
+        };
+        Ray ray;
+        ray.o = glm::vec3(0.0f);
+        ray.d = glm::vec3(0.0f);
+        ray.d[axis] = dir;
+        for (int first_corner = 0; first_corner < 3; ++first_corner) {
+          for (int turn : {1, 2}) {  // both windings
+            const glm::vec3 p0 = place(corners[first_corner]),
+                            p1 = place(corners[(first_corner + turn) % 3]),
+                            p2 = place(corners[(first_corner + 2 * turn) % 3]);
+            TriangleHit hit;
+            const bool got = intersect_triangle(ray, p0, p1, p2, &hit);
+            ++rays;
+            if (got != expected && ++wrong == 1) {
+              char text[320];
+              std::snprintf(text, sizeof text,
+                            "ray from (0, 0, 0) along (%g, %g, %g), corners (%.9g, %.9g, %.9g) "
+                            "(%.9g, %.9g, %.9g) (%.9g, %.9g, %.9g): exact %s, yours %s",
+                            ray.d.x, ray.d.y, ray.d.z, p0.x, p0.y, p0.z, p1.x, p1.y, p1.z, p2.x,
+                            p2.y, p2.z, expected ? "hit" : "miss", got ? "hit" : "miss");
+              first = text;
+            }
+          }
+        }
+      }
+    }
+  }
+  EXPECT_EQ(wrong, 0) << wrong << " of " << rays
+                      << " rays passing a hair beside an edge (its float products round to the "
+                         "same value) land on the wrong side of it; the first: "
+                      << first
+                      << ". Where an edge function is exactly 0 in float, recompute the three in "
+                         "double, where products of floats are exact, so its sign is the exact one";
 }
 
 }  // namespace
