@@ -39,11 +39,21 @@ glm::vec3 estimate_direct_hemisphere(const LightingContext& ctx, const ShadingPo
   }
   return sum / float(n);
   // END SOLUTION
-  // STUDENT: ctx.light_samples times: draw wi = square_to_uniform_hemisphere(rng.next_2d()) in the
-  // local frame, shoot spawn_ray(sp.hit, sp.frame.to_world(wi)) and intersect it; the light it
-  // brings back is ctx.lights.radiance_along(ray, &hit), or (ray, nullptr) if it escapes: the
-  // lights as light sampling samples them (an area light's own rectangle, not the panel the
-  // camera sees). Add f(wo, wi)·Le·cosθ / pdf and return the average.
+  // STUDENT: the direct light reflected at sp towards sp.wo, estimated from directions drawn
+  // uniformly over the hemisphere above the surface (docs/handout/part3.md, step 3, has the idea
+  // and the maths).
+  // In: sp (its hit, local frame, wo and BSDF); ctx.query (what a ray hits), ctx.lights (what it
+  // brings back: radiance_along), ctx.light_samples (-l); rng, the only source of random numbers.
+  // Out: radiance per channel, finite and >= 0, whose expectation is the direct-lighting integral
+  // at sp.
+  // What must hold, and is graded:
+  // - the estimate is the mean over ctx.light_samples directions, each drawn uniformly over the
+  //   hemisphere (warp.h) and weighted by the density it was drawn with;
+  // - each direction stands for a ray that leaves the hit (spawn_ray) in the world direction it
+  //   stands for; f and cosθ are taken in sp's local frame;
+  // - what a ray brings back is ctx.lights.radiance_along for it: the lights as light sampling
+  //   samples them (an area light's own rectangle, not the panel the camera sees), the
+  //   environment where it escapes, nothing from any other surface.
   PT_STUDENT_TODO("part 3", "estimate_direct_hemisphere");
   (void)ctx, (void)sp, (void)rng;
   return glm::vec3(0.0f);

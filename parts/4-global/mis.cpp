@@ -66,13 +66,21 @@ glm::vec3 estimate_direct_mis(const LightingContext& ctx, const ShadingPoint& sp
   }
   return L + sum / float(ns);
   // END SOLUTION
-  // STUDENT: zero for a specular BSDF. Light samples as in estimate_direct_importance, each
-  // weighted by power_heuristic(n, ls.pdf, ns, sp.bsdf->pdf(sp.wo, wi)) where a ray can hit the
-  // light (lights[k].can_be_hit(); else weight 1); then ns = ctx.light_samples BSDF samples
-  // (sp.bsdf->sample_f), each ray intersected once; for every light k that can_be_hit(), what it
-  // sends along the ray (ctx.lights.emitted_along(k, ray, &hit), or nullptr if the ray escapes:
-  // an area light's rectangle, as its light samples are drawn) weighted by
-  // power_heuristic(ns, pdf_bsdf, n, ctx.lights.pdf(k, ...)).
+  // STUDENT: the direct light reflected at sp towards sp.wo, estimated from light samples and
+  // BSDF samples together, each weighted by the power heuristic (docs/handout/part4.md, step 4,
+  // has the idea and the maths).
+  // In: sp; ctx.lights (each light's samples, its density for a direction: pdf, what it sends
+  // along a ray: emitted_along, whether a ray can hit it: can_be_hit), ctx.query,
+  // ctx.light_samples (-l); rng. Out: radiance per channel, finite and >= 0, whose expectation is
+  // the direct-lighting integral at sp.
+  // What must hold, and is graded:
+  // - a specular BSDF gets nothing, and no ray is traced for it;
+  // - the light samples are those of estimate_direct_importance (ctx.light_samples per area
+  //   light, one per delta light), and ctx.light_samples directions come from sp.bsdf's own
+  //   sampling, one ray each, meeting the lights as light sampling samples them;
+  // - every sample of either strategy is weighted by power_heuristic against the density the
+  //   other strategy, with its own sample count, gives the same direction (a light no ray can
+  //   hit leaves its samples weight 1), so the estimate stays unbiased.
   // Until then it returns no light (a stand-in that returned Part 3's estimate would pass the
   // step's known-answer checks without a line of MIS).
   PT_STUDENT_TODO("part 4", "estimate_direct_mis");

@@ -41,13 +41,19 @@ int sample_pixel_adaptive(const AdaptiveSettings& settings, const PixelSampleFn&
   }
   return taken;
   // END SOLUTION
-  // STUDENT: take samples in batches of settings.batch, each the radiance next_sample()
-  // returns. Sample number `taken` (from 0) goes into an IlluminanceStats of decision samples
-  // when sample_decides(settings.rule, taken), and into *estimate when
-  // sample_counts(settings.rule, taken). After each batch stop if converged(decision,
-  // estimate->count, settings.tolerance) says so (the rule you are handed: the renderer hands
-  // you your pixel_converged). Never take more than settings.max_samples. Return how many
-  // samples you took, decision samples included.
+  // STUDENT: sample one pixel until it has converged or has taken its maximum
+  // (docs/handout/part5.md, step 2, has the idea).
+  // In: settings (batch, tolerance, max_samples, the stopping rule), next_sample (the radiance of
+  // the pixel's next sample), converged (the rule you are handed: the renderer hands you your
+  // pixel_converged). Out: *estimate holds the samples that make the pixel's value; the return
+  // value is how many samples were taken.
+  // What must hold, and is graded:
+  // - sample number i (from 0) feeds the decision statistics when sample_decides(settings.rule,
+  //   i) and *estimate when sample_counts(settings.rule, i) (under the split rule, never both);
+  // - convergence is asked after each whole batch of settings.batch samples, with the estimate's
+  //   count, and the loop stops after the first batch after which it holds;
+  // - never more than settings.max_samples samples; the count returned includes the decision
+  //   samples (the sample-rate image shows it).
   PT_STUDENT_TODO("part 5", "sample_pixel_adaptive");
   (void)settings, (void)next_sample, (void)converged;
   estimate->add(glm::vec3(0.0f));
