@@ -14,7 +14,7 @@ dir="${BUILD_DIR:-build-libcxx}"
 mkdir -p "$dir"
 dir="$(cd "$dir" && pwd)"
 gtest_source="${GTEST_SOURCE:-/usr/src/googletest}"
-libcxx=(-DCMAKE_CXX_COMPILER=clang++ -DCMAKE_CXX_FLAGS=-stdlib=libc++
+libcxx=(-DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_CXX_FLAGS=-stdlib=libc++
         -DCMAKE_EXE_LINKER_FLAGS=-stdlib=libc++ -DCMAKE_SHARED_LINKER_FLAGS=-stdlib=libc++
         -DCMAKE_MODULE_LINKER_FLAGS=-stdlib=libc++)
 
