@@ -285,6 +285,40 @@ int PartResult::failing_steps() const {
   return n;
 }
 
+namespace {
+
+/// The rules the failing checks after the first enforce that the first's message did not name,
+/// each once: the step's message names every rule its failing checks hold the code to, not only
+/// the first check's. Bounded: the step's checks' rules, each once.
+std::string other_failing_rules(const StepSpec& spec, const std::vector<CheckResult>& checks) {
+  std::set<std::string> named;
+  std::vector<std::string> others;
+  std::string rules;
+  bool first = true;
+  for (const CheckResult& c : checks) {
+    if (c.skipped || c.pass) continue;
+    const std::vector<const Rule*> enforced = rules_enforced_by(spec, c.name);
+    if (first) {
+      for (const Rule* rule : enforced) named.insert(rule->id);
+      first = false;
+      continue;
+    }
+    bool adds = false;
+    for (const Rule* rule : enforced)
+      if (named.insert(rule->id).second) {
+        rules += "\nThe rule it checks, #" + rule->id + ": " + rule->text;
+        adds = true;
+      }
+    if (adds) others.push_back(c.name.substr(c.name.rfind('.') + 1));
+  }
+  if (others.empty()) return "";
+  std::string names;
+  for (size_t i = 0; i < others.size(); ++i) names += (i ? ", " : "") + others[i];
+  return "\nAlso failing: " + names + rules;
+}
+
+}  // namespace
+
 StepResult score_step(const StepSpec& spec, std::vector<CheckResult> checks) {
   StepResult r;
   r.part = spec.part;
@@ -329,7 +363,7 @@ StepResult score_step(const StepSpec& spec, std::vector<CheckResult> checks) {
   }
   if (failed > 0) {
     r.message += "\n" + std::to_string(failed) + " of " + std::to_string(counted) +
-                 " checks failed" + todo;
+                 " checks failed" + other_failing_rules(spec, r.checks) + todo;
   } else {
     r.message = "all " + std::to_string(counted) + " checks pass";
   }

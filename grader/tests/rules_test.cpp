@@ -101,5 +101,39 @@ TEST(GraderRules, AFailingCheckSaysTheRuleItEnforces) {
   EXPECT_EQ(rules_enforced_by(m.parts[0].steps[0], "part3.step4.importance.other").size(), 0u);
 }
 
+// The step's message shows the first failing check whole; the rules of the other failing checks
+// are named too, each once, with the checks that hold the code to them.
+TEST(GraderRules, TheRulesOfEveryFailingCheckAreNamed) {
+  const Manifest m = one_step({{"sum", "every light adds its own light",
+                                {"part3.step4.importance.sums"}, {}},
+                               {"density", "a sample is divided by its density",
+                                {"part3.step4.importance.scenes", "part3.step4.importance.sums"},
+                                {}},
+                               {"frame", "f and cos in the local frame",
+                                {"part3.step4.importance.frames"}, {}}});
+  auto check = [](const std::string& name, bool pass) {
+    CheckResult c;
+    c.name = name;
+    c.kind = "test";
+    c.pass = pass;
+    c.output = pass ? "" : "it failed";
+    return c;
+  };
+  StepResult r = score_step(m.parts[0].steps[0],
+                            {check("part3.step4.importance.sums", false),
+                             check("part3.step4.importance.scenes/box_sah", false),
+                             check("part3.step4.importance.frames", true)});
+  EXPECT_NE(r.message.find("#sum: "), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("#density: "), std::string::npos) << r.message;
+  // Each rule once, and none whose checks all pass.
+  EXPECT_EQ(r.message.find("#density: "), r.message.rfind("#density: ")) << r.message;
+  EXPECT_EQ(r.message.find("#frame"), std::string::npos) << r.message;
+  // A later failing check that adds a rule is listed by its name.
+  r = score_step(m.parts[0].steps[0], {check("part3.step4.importance.scenes/box_sah", false),
+                                       check("part3.step4.importance.sums", false)});
+  EXPECT_NE(r.message.find("Also failing: sums\nThe rule it checks, #sum: "), std::string::npos)
+      << r.message;
+}
+
 }  // namespace
 }  // namespace pt::grader
