@@ -13,8 +13,10 @@ if(PT_BUILD_TESTS)
   include(GoogleTest)
   # Every test executable's main, compiled once (framework/testing/test_main.cpp), and the tree's
   # paths (framework/testing/test_paths.h): the one object that names them, so that the tests'
-  # own objects are the same in every tree and a compiler cache shares them.
-  add_library(pt_test_paths OBJECT ${PROJECT_SOURCE_DIR}/framework/testing/test_paths.cpp)
+  # own objects are the same in every tree and a compiler cache shares them. With them, the flag
+  # a grader's probe sets (framework/testing/probe_mode.h).
+  add_library(pt_test_paths OBJECT ${PROJECT_SOURCE_DIR}/framework/testing/test_paths.cpp
+    ${PROJECT_SOURCE_DIR}/framework/testing/probe_mode.cpp)
   target_include_directories(pt_test_paths PRIVATE ${PROJECT_SOURCE_DIR})
   add_library(pt_test_main OBJECT ${PROJECT_SOURCE_DIR}/framework/testing/test_main.cpp)
   target_include_directories(pt_test_main PRIVATE ${PROJECT_SOURCE_DIR})

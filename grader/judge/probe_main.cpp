@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include "framework/testing/probe_mode.h"
 #include "grader/judge/record.h"
 
 namespace {
@@ -20,6 +21,8 @@ class FlushAfterEachTest : public testing::EmptyTestEventListener {
 
 int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);
+  // The tests may leave their expectations to the judge, which computes them itself.
+  pt::test::set_probe();
   // One thread: the judge replays the calls in the order they were made, so the probe makes them
   // in the one order the test's code gives (a parallel loop on one thread runs in order).
   tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);

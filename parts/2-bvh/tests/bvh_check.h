@@ -11,6 +11,7 @@
 #include <mutex>
 #include <ostream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -24,6 +25,7 @@
 #include "framework/math/float_error.h"
 #include "framework/sampling/rng.h"
 #include "framework/sampling/warp.h"
+#include "framework/testing/probe_mode.h"
 #include "framework/scene/collada_loader.h"
 #include "parts/2-bvh/bvh.h"
 #include "pipeline/1-raygen/scene_intersect.h"
@@ -171,14 +173,52 @@ class Reference {
   std::vector<double> radius_;
 };
 
-/// Every ray through `bvh` and through brute force: the same hit or miss, bit-identical t and the
-/// same primitive as nearest_reference; occluded() equal to BruteForce's and to whether
-/// intersect() found a hit. Part 1's BruteForce::intersect is compared too: where it differs,
-/// it must be by a near-tie (its t within 4 ulps above the BVH's).
-inline Comparison compare_with_brute_force(const Scene& s, const RayQuery& bvh,
-                                           const std::vector<Ray>& rays) {
-  BruteForce bf(s);
+/// Brute force's answers for one ray: the nearest hit and occlusion of nearest_reference's scan,
+/// and Part 1's BruteForce's own (a full pass over the primitives, so asked of one ray in eight,
+/// one in 64 on big meshes; elsewhere they repeat the reference's).
+struct BruteForceAnswer {
+  SurfaceHit nearest, part1;
+  bool hit = false, occluded = false, part1_hit = false, part1_occluded = false;
+};
+
+/// Brute force's answers for `rays` in `s`, computed once for every tree compared with them. In a
+/// probe none (probe_mode.h): the judge computes them itself.
+inline std::vector<BruteForceAnswer> brute_force_answers(const Scene& s, const std::vector<Ray>& rays) {
+  std::vector<BruteForceAnswer> answers;
+  if (is_probe()) return answers;
+  answers.resize(rays.size());
+  const BruteForce bf(s);
   const Reference ref(s);
+  const size_t every = s.primitive_count() > 10000 ? 64 : 8;
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, rays.size(), 256),
+                    [&](const tbb::blocked_range<size_t>& range) {
+    for (size_t i = range.begin(); i < range.end(); ++i) {
+      BruteForceAnswer& a = answers[i];
+      a.hit = ref.intersect(rays[i], &a.nearest);
+      a.occluded = ref.occluded(rays[i]);
+      if (i % every == 0) {
+        a.part1_hit = bf.intersect(rays[i], &a.part1);
+        a.part1_occluded = bf.occluded(rays[i]);
+      } else {
+        a.part1_hit = a.hit, a.part1 = a.nearest, a.part1_occluded = a.occluded;
+      }
+    }
+  });
+  return answers;
+}
+
+/// Every ray through `bvh` and through brute force (`answers`, brute_force_answers of the same
+/// rays): the same hit or miss, bit-identical t and the same primitive as nearest_reference;
+/// occluded() equal to brute force's and to whether intersect() found a hit. Part 1's
+/// BruteForce::intersect is compared too: where it differs, it must be by a near-tie (its t
+/// within 4 ulps above the BVH's). In a probe (no answers) only the tree is asked, in the same
+/// order as in the judge.
+inline Comparison compare_with_brute_force(const Scene& s, const RayQuery& bvh,
+                                           const std::vector<Ray>& rays,
+                                           const std::vector<BruteForceAnswer>& answers) {
+  const bool probe = answers.empty() && !rays.empty();
+  if (!probe && answers.size() != rays.size())
+    throw std::logic_error("compare_with_brute_force: answers of other rays");
   std::atomic<size_t> hits{0}, nearest{0}, occl{0}, any_vs{0}, p1{0}, p1_far{0}, stray{0};
   std::mutex m;
   std::string examples;
@@ -187,16 +227,15 @@ inline Comparison compare_with_brute_force(const Scene& s, const RayQuery& bvh,
                     [&](const tbb::blocked_range<size_t>& range) {
     for (size_t i = range.begin(); i < range.end(); ++i) {
       const Ray& r = rays[i];
-      SurfaceHit a, b, c;
+      SurfaceHit a;
+      const bool ha = bvh.intersect(r, &a);
+      const bool oa = bvh.occluded(r);
+      if (probe) continue;
+      const BruteForceAnswer& want = answers[i];
+      const SurfaceHit &b = want.nearest, &c = want.part1;
+      const bool hb = want.hit, ob = want.occluded, hc = want.part1_hit;
       std::string why;
-      const bool ha = bvh.intersect(r, &a), hb = ref.intersect(r, &b);
-      const bool oa = bvh.occluded(r), ob = ref.occluded(r);
-      // Part 1's own loop costs a full pass over the primitives: one ray in eight, one in 64 on
-      // big meshes.
-      const bool part1 = i % (s.primitive_count() > 10000 ? 64 : 8) == 0;
-      const bool hc = part1 ? bf.intersect(r, &c) : hb;
-      if (!part1) c = b;
-      if (part1 && bf.occluded(r) != ob) ++occl, why += " Part 1 BruteForce::occluded differs";
+      if (want.part1_occluded != ob) ++occl, why += " Part 1 BruteForce::occluded differs";
       if (hb) ++hits;
       // The BVH missed (or passed) a brute-force hit that lies outside its own primitive's box:
       // Part 1's rounding, not the tree's (see outside_own_box); the BVH's answer then stands.
@@ -228,6 +267,12 @@ inline Comparison compare_with_brute_force(const Scene& s, const RayQuery& bvh,
     }
   });
   return {rays.size(), hits, nearest, occl, any_vs, p1, p1_far, stray, examples};
+}
+
+/// The same, brute force's answers computed for this one tree.
+inline Comparison compare_with_brute_force(const Scene& s, const RayQuery& bvh,
+                                           const std::vector<Ray>& rays) {
+  return compare_with_brute_force(s, bvh, rays, brute_force_answers(s, rays));
 }
 
 /// Loads a scene, or explains why not in *why (so the caller can skip).
