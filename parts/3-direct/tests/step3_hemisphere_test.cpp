@@ -4,6 +4,7 @@
 // LightSet's (radiance_along), as light sampling samples it.
 #include <gtest/gtest.h>
 
+#include "framework/testing/draws_from_rng_only.h"
 #include "parts/3-direct/tests/direct_scenes.h"
 
 namespace pt {
@@ -44,6 +45,18 @@ TEST(hemisphere, emitter_panels_reflect_nothing_in_a_closed_box) {
 // rectangle with its radiance, as light sampling lights it, not by the panel the camera sees.
 TEST(hemisphere, floor_is_lit_by_the_lights_rectangle) {
   test::expect_floor_lit_by_the_lights_rectangle(true);
+}
+
+// rng is the estimate's only source of random numbers: under a uniform sky every direction
+// brings light, weighted by its own cosθ, so the answer depends on every number drawn.
+TEST(hemisphere, draws_from_rng_only) {
+  test::Rig rig(test::plane_under_sky());
+  rig.ctx.light_samples = 4;
+  Rng g(7);
+  const Ray r = test::ray_at_plane(g);
+  test::expect_draws_from_rng_only("estimate_direct_hemisphere", [&](Rng& rng) {
+    return test::reflected_at_hit(rig, true, r, rng);
+  });
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "framework/testing/draws_from_rng_only.h"
 #include "parts/3-direct/tests/direct_scenes.h"
 
 namespace pt {
@@ -199,6 +200,22 @@ TEST(importance, emitter_panels_reflect_nothing_in_a_closed_box) {
 // its radiance, not the panel the camera sees.
 TEST(importance, floor_is_lit_by_the_lights_rectangle) {
   test::expect_floor_lit_by_the_lights_rectangle(false);
+}
+
+// rng is the estimate's only source of random numbers: every sample of the panel's light reaches
+// the floor, each with its own distance and angle, so the answer depends on every number drawn.
+TEST(importance, draws_from_rng_only) {
+  Scene s = test::panel_under_ceiling();
+  const uint32_t floor = test::add_material(s, glm::vec3(0.5f));
+  test::add_quad(s, {-2, -2, 0}, {2, -2, 0}, {2, 2, 0}, {-2, 2, 0}, floor);
+  test::Rig rig(s);
+  rig.ctx.light_samples = 4;
+  Ray r;
+  r.o = glm::vec3(0.1f, -0.1f, 0.5f);
+  r.d = glm::vec3(0.0f, 0.0f, -1.0f);
+  test::expect_draws_from_rng_only("estimate_direct_importance", [&](Rng& rng) {
+    return test::reflected_at_hit(rig, false, r, rng);
+  });
 }
 
 }  // namespace

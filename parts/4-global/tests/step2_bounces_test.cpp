@@ -9,6 +9,7 @@
 #include <functional>
 #include <string>
 
+#include "framework/testing/draws_from_rng_only.h"
 #include "parts/4-global/tests/path_scenes.h"
 
 namespace pt {
@@ -250,6 +251,24 @@ TEST(bounces, shading_point_repairs_broken_normals) {
       glm::vec3 L = at_least_one_bounce_radiance(rig.ctx, sp, 1, rng);
       for (int c = 0; c < 3; ++c) ASSERT_TRUE(std::isfinite(L[c]));
     }
+  }
+}
+
+// rng is the estimate's only source of random numbers: inside a glowing enclosure every bounce
+// meets a wall and each vertex's light depends on where it is, so the answer depends on every
+// direction drawn, by light and by hemisphere sampling (roulette, step 3's, off).
+TEST(bounces, draws_from_rng_only) {
+  test::Rig rig(test::enclosure(0.5f, 1.0f));
+  rig.ctx.max_depth = 3;
+  rig.ctx.russian_roulette = false;
+  for (bool hemisphere : {false, true}) {
+    SCOPED_TRACE(hemisphere ? "ctx.hemisphere = true" : "ctx.hemisphere = false");
+    rig.ctx.hemisphere = hemisphere;
+    Rng g(5);
+    const Ray r = test::ray_from_inside(g);
+    test::expect_draws_from_rng_only("at_least_one_bounce_radiance", [&](Rng& rng) {
+      return test::bounced_at_hit(rig.ctx, r, rng);
+    });
   }
 }
 

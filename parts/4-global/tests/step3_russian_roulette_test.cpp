@@ -8,6 +8,7 @@
 #include <cmath>
 #include <string>
 
+#include "framework/testing/draws_from_rng_only.h"
 #include "parts/4-global/tests/path_scenes.h"
 
 namespace pt {
@@ -111,6 +112,19 @@ TEST(russian_roulette, none_when_it_is_off) {
   EXPECT_EQ(rays, 5.0) << "bounce rays per path with roulette off at depth limit 6, albedo 0.3: "
                        << rays << " (every path goes on to the limit: 5; fewer means paths "
                        << "ended at random although ctx.russian_roulette is false)";
+}
+
+// The roulette's coin comes from rng too: with roulette on, where a path ends decides the answer,
+// so a coin of another generator gives two answers for the same numbers.
+TEST(russian_roulette, draws_its_coin_from_rng_only) {
+  test::Rig rig(test::enclosure(0.5f, 1.0f));
+  rig.ctx.max_depth = 8;
+  rig.ctx.russian_roulette = true;
+  Rng g(9);
+  const Ray r = test::ray_from_inside(g);
+  test::expect_draws_from_rng_only("at_least_one_bounce_radiance with roulette", [&](Rng& rng) {
+    return test::bounced_at_hit(rig.ctx, r, rng);
+  }, 16);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 
 #include <limits>
 
+#include "framework/testing/draws_from_rng_only.h"
 #include "parts/4-global/mis.h"
 #include "parts/4-global/tests/path_scenes.h"
 
@@ -122,6 +123,18 @@ TEST(mis, takes_l_light_samples_and_l_bsdf_samples) {
         << "rays traced for one floor point under one area light: -l light samples (one shadow "
            "ray each) and -l BSDF samples (one ray each); light sampling alone traces -l";
   }
+}
+
+// rng is the estimate's only source of random numbers: on the floor under the light both
+// strategies' samples bring light, each its own, so the answer depends on every number drawn.
+TEST(mis, draws_from_rng_only) {
+  test::Rig rig(test::disagreeing_panel_scene());
+  rig.ctx.light_samples = 4;
+  Ray r;
+  r.o = glm::vec3(0.4f, 0.0f, 0.2f);
+  r.d = glm::vec3(0.0f, 0.0f, -1.0f);
+  const test::Estimator mis = mis_at_hit(rig);
+  test::expect_draws_from_rng_only("estimate_direct_mis", [&](Rng& rng) { return mis(r, rng); });
 }
 
 }  // namespace
