@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <fstream>
+#include <map>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -135,9 +137,9 @@ Manifest read_manifest(const std::string& path) {
         st.rests_on = optional(sj, "rests_on", std::string());
         st.tests_rest_on_steps = optional(sj, "tests_rest_on_steps", std::vector<int>());
         for (int k : st.tests_rest_on_steps)
-          if (k < 1 || k >= st.step)
-            bad(path, sw, "tests_rest_on_steps names earlier steps of the part only (1 to " +
-                              std::to_string(st.step - 1) + ")");
+          if (k < 1 || k == st.step)
+            bad(path, sw, "tests_rest_on_steps names other steps of the part only (from 1, not " +
+                              std::to_string(st.step) + " itself)");
         for (const auto& rj : optional(sj, "renders", nlohmann::ordered_json::array())) {
           RenderCheck r;
           r.part = p.part;
@@ -210,6 +212,26 @@ Manifest read_manifest(const std::string& path) {
         p.steps.push_back(st);
       }
       if (p.steps.empty()) bad(path, where, "a part has at least one step");
+      // Whose functions a step's tests run: a failing test is charged to a failing step it runs
+      // (step_at_fault.h). Steps whose tests run each other would pass a failure back and forth.
+      // (A render runs earlier steps only: it belongs to the latest step it runs.)
+      std::map<int, std::vector<int>> runs;
+      for (const StepSpec& st : p.steps) runs[st.step] = st.tests_rest_on_steps;
+      for (const StepSpec& st : p.steps)
+        for (int k : st.tests_rest_on_steps) {
+          const std::string sw = where + ", step " + std::to_string(st.step);
+          if (!p.find_step(k)) bad(path, sw, "tests_rest_on_steps names step " + std::to_string(k) + ", which the part does not have");
+          std::vector<int> todo = {k};
+          std::set<int> seen;
+          while (!todo.empty()) {
+            const int at = todo.back();
+            todo.pop_back();
+            if (at == st.step)
+              bad(path, sw, "its tests run step " + std::to_string(k) + ", whose tests run it in "
+                            "turn (tests_rest_on_steps): a failure would be charged back and forth");
+            if (seen.insert(at).second) todo.insert(todo.end(), runs[at].begin(), runs[at].end());
+          }
+        }
       m.parts.push_back(p);
     }
   } catch (const nlohmann::json::exception& e) {

@@ -70,9 +70,9 @@ struct StepSpec {
   double points = 0.0;
   std::vector<std::string> functions;   ///< "parts/3-direct/direct_lighting.cpp: estimate_direct_importance"
   std::string rests_on;                 ///< what its checks call besides its functions, in words
-  /// The earlier steps of the part whose student functions its tests run (the manifest's
-  /// `tests_rest_on_steps`): a failing test is charged to the earliest of them that fails
-  /// (grader/step_at_fault.h).
+  /// The other steps of the part whose student functions its tests run (the manifest's
+  /// `tests_rest_on_steps`; usually earlier ones): a failing test is charged to the earliest of
+  /// them that fails (grader/step_at_fault.h).
   std::vector<int> tests_rest_on_steps;
   std::vector<RenderCheck> renders;     ///< graded under the manifest's stopping rule
   std::vector<RenderCheck> other_rule_renders;  ///< of the other stopping rule: not graded

@@ -59,7 +59,7 @@ void charge_steps_at_fault(const PartSpec& spec, std::vector<StepResult>& steps)
       size_t at_fault = steps.size();
       for (int j : rests) {
         auto it = index.find(j);
-        if (j < k.step && it != index.end() && failing[it->second]) {
+        if (j != k.step && it != index.end() && failing[it->second]) {
           at_fault = it->second;
           break;
         }

@@ -1,4 +1,4 @@
-// The step at fault: a check that fails while an earlier step it runs fails is charged to that
+// The step at fault: a check that fails while another step it runs fails is charged to that
 // step, so that a bug costs points where it is and the total stays what the checks give.
 #pragma once
 
@@ -10,11 +10,12 @@
 
 namespace pt::grader {
 
-/// The earlier steps of its part that a check of `spec` runs: a render's `rests_on_steps`, a
-/// test's step's `tests_rest_on_steps`.
+/// The other steps of its part that a check of `spec` runs: a render's `rests_on_steps` (earlier
+/// ones), a test's step's `tests_rest_on_steps` (usually earlier; Part 4's path tests compare
+/// with the student's own step 2).
 std::vector<int> check_rests_on(const StepSpec& spec, const CheckResult& check);
 
-/// Moves the share of every failing check that rests on an earlier step of its part with
+/// Moves the share of every failing check that rests on another step of its part with
 /// failing checks of its own to the earliest such step, at most what that step has left
 /// (its score never goes below 0; what it cannot take stays where the check is). The part's
 /// total never changes, so no submission can raise its score by breaking a step on purpose.

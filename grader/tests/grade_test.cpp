@@ -214,6 +214,32 @@ TEST_F(GraderGrade, ABadManifestNamesTheEntry) {
   }
 }
 
+// Steps whose tests run each other would charge a failure back and forth (step_at_fault.h): the
+// manifest refuses them, and a step that names one the part does not have.
+TEST_F(GraderGrade, StepsWhoseTestsRunEachOtherAreRefused) {
+  auto refused = [&](const std::string& json, const std::string& words) {
+    std::ofstream(options_.manifest_path) << json;
+    try {
+      read_manifest(options_.manifest_path);
+      ADD_FAILURE() << "accepted: " << json;
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+    }
+  };
+  refused(R"({"parts": [{"part": 1, "steps": [
+      {"step": 1, "name": "a", "points": 1, "tests_rest_on_steps": [2]},
+      {"step": 2, "name": "b", "points": 1, "tests_rest_on_steps": [1]}]}]})",
+          "step 1: its tests run step 2, whose tests run it in turn");
+  refused(R"({"parts": [{"part": 1, "steps": [
+      {"step": 1, "name": "a", "points": 1, "tests_rest_on_steps": [3]}]}]})",
+          "names step 3, which the part does not have");
+  std::ofstream(options_.manifest_path) << R"({"parts": [{"part": 1, "steps": [
+      {"step": 1, "name": "a", "points": 1, "tests_rest_on_steps": [2]},
+      {"step": 2, "name": "b", "points": 1}]}]})";
+  EXPECT_EQ(read_manifest(options_.manifest_path).parts[0].steps[0].tests_rest_on_steps,
+            std::vector<int>{2});
+}
+
 // The project's own rubric: every reference recorded, no two graded checks on one image (the
 // normals of two scenes that differ only in materials are one image), every step with points.
 TEST(GraderManifest, TheProjectsRubricHasDistinctReferencesAndPointsInEveryStep) {

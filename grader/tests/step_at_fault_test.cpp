@@ -1,5 +1,6 @@
-// The step at fault: a failing check that runs an earlier failing step costs that step its share,
-// never more than it has, and the part's total is what the checks give whatever is charged.
+// The step at fault: a failing check that runs another failing step of its part costs that step
+// its share, never more than it has, and the part's total is what the checks give whatever is
+// charged.
 #include "grader/step_at_fault.h"
 
 #include <random>
@@ -115,8 +116,8 @@ TEST(GraderStepAtFault, AFailureWithTheStepsItRunsPassingStaysItsOwn) {
   EXPECT_EQ(steps[2].message.find("charged"), std::string::npos) << steps[2].message;
 }
 
-// A test of step 3 runs no earlier step (its step names none), so a failing step 1 takes none of
-// its loss; a failing step never takes a share from an earlier one.
+// A test of step 3 runs no other step (its step names none), so a failing step 1 takes none of
+// its loss.
 TEST(GraderStepAtFault, OnlyWhatAStepRunsIsCharged) {
   const PartSpec p = three_steps();
   std::vector<StepResult> steps =
@@ -130,10 +131,35 @@ TEST(GraderStepAtFault, OnlyWhatAStepRunsIsCharged) {
   EXPECT_DOUBLE_EQ(steps[2].score, 3.0);
 }
 
+// A step's tests may run a later step (Part 4's path tests compare with the student's own step 2
+// on the same random numbers): when that step fails too, it is charged.
+TEST(GraderStepAtFault, ALaterStepATestRunsIsChargedToo) {
+  PartSpec p = three_steps();
+  p.steps[0].tests_rest_on_steps = {2};
+  p.steps[1].tests_rest_on_steps = {};  // the manifest allows no steps that run each other
+  std::vector<StepResult> steps =
+      scored(p, {{check("part1.step1.camera_ray.a", "test", false),
+                  check("part1.step1.camera_ray.b", "test", true)},
+                 {check("part1.step2.pixel_loop.a", "test", false),
+                  check("part1.step2.pixel_loop.b", "test", true),
+                  check("part1.step2.pixel_loop.c", "test", true)},
+                 {check("part1.step3.triangle.a", "test", true)}});
+  const double before = total(steps);
+  charge_steps_at_fault(p, steps);
+  EXPECT_DOUBLE_EQ(total(steps), before);
+  EXPECT_DOUBLE_EQ(steps[0].score, 3.0) << steps[0].message;
+  EXPECT_DOUBLE_EQ(steps[1].score, 2.0 - 1.5) << steps[1].message;
+  EXPECT_NE(steps[0].message.find("runs step 2 (part1.step2.pixel_loop), which fails"),
+            std::string::npos)
+      << steps[0].message;
+}
+
 // Whatever passes and fails, the part's total is the checks' and no step leaves [0, points]: a
-// submission cannot raise its score by breaking a step on purpose.
+// submission cannot raise its score by breaking a step on purpose, even where two steps run each
+// other (which the manifest refuses).
 TEST(GraderStepAtFault, TheTotalNeverMoves) {
-  const PartSpec p = three_steps();
+  PartSpec p = three_steps();
+  p.steps[0].tests_rest_on_steps = {2};
   std::mt19937 rng(7);
   for (int trial = 0; trial < 2000; ++trial) {
     std::vector<std::vector<CheckResult>> checks(3);

@@ -53,7 +53,9 @@ glm::vec3 estimate_direct_hemisphere(const LightingContext& ctx, const ShadingPo
   //   stands for; f and cosθ are taken in sp's local frame;
   // - what a ray brings back is ctx.lights.radiance_along for it: the lights as light sampling
   //   samples them (an area light's own rectangle, not the panel the camera sees), the
-  //   environment where it escapes, nothing from any other surface.
+  //   environment where it escapes, nothing from any other surface;
+  // - rng is the only source of its random numbers: the same sp and an Rng in the same state give
+  //   the same estimate.
   PT_STUDENT_TODO("part 3", "estimate_direct_hemisphere");
   (void)ctx, (void)sp, (void)rng;
   return glm::vec3(0.0f);
@@ -93,7 +95,9 @@ glm::vec3 estimate_direct_importance(const LightingContext& ctx, const ShadingPo
   // - a sample adds light only from above the surface, with a density above zero, and only when
   //   nothing blocks it: one shadow ray per sample, made by spawn_shadow_ray (no offset of your
   //   own), and none for a sample that can add nothing (f or its radiance zero);
-  // - directions are in the frame each quantity needs (f and cosθ in sp's local frame).
+  // - directions are in the frame each quantity needs (f and cosθ in sp's local frame);
+  // - rng is the only source of its random numbers: the same sp and an Rng in the same state give
+  //   the same estimate.
   PT_STUDENT_TODO("part 3", "estimate_direct_importance");
   (void)ctx, (void)sp, (void)rng;
   return glm::vec3(0.0f);

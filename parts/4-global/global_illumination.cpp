@@ -64,7 +64,9 @@ glm::vec3 at_least_one_bounce_radiance(const LightingContext& ctx, const Shading
   //   never at the first, with a chance of going on that is above zero and below one at least
   //   sometimes, and the expectation stays what it is without roulette; without it no path ends
   //   before ctx.max_depth. Step 2's checks run with roulette off, step 3's compare your estimate
-  //   with and without it.
+  //   with and without it;
+  // - rng is the only source of random numbers, the roulette's coin included: the same sp, depth
+  //   and an Rng in the same state give the same estimate (steps 2 and 3 each check it).
   PT_STUDENT_TODO("part 4", "at_least_one_bounce_radiance");
   (void)ctx, (void)sp, (void)depth, (void)rng;
   return glm::vec3(0.0f);

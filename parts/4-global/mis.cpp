@@ -71,7 +71,7 @@ glm::vec3 estimate_direct_mis(const LightingContext& ctx, const ShadingPoint& sp
   // has the idea and the maths).
   // In: sp; ctx.lights (each light's samples, its density for a direction: pdf, what it sends
   // along a ray: emitted_along, whether a ray can hit it: can_be_hit), ctx.query,
-  // ctx.light_samples (-l); rng. Out: radiance per channel, finite and >= 0, whose expectation is
+  // ctx.light_samples (-l); rng, the only source of random numbers. Out: radiance per channel, finite and >= 0, whose expectation is
   // the direct-lighting integral at sp.
   // What must hold, and is graded:
   // - a specular BSDF gets nothing, and no ray is traced for it;
@@ -80,7 +80,9 @@ glm::vec3 estimate_direct_mis(const LightingContext& ctx, const ShadingPoint& sp
   //   sampling, one ray each, meeting the lights as light sampling samples them;
   // - every sample of either strategy is weighted by power_heuristic against the density the
   //   other strategy, with its own sample count, gives the same direction (a light no ray can
-  //   hit leaves its samples weight 1), so the estimate stays unbiased.
+  //   hit leaves its samples weight 1), so the estimate stays unbiased;
+  // - rng is the only source of its random numbers: the same sp and an Rng in the same state give
+  //   the same estimate.
   // Until then it returns no light (a stand-in that returned Part 3's estimate would pass the
   // step's known-answer checks without a line of MIS).
   PT_STUDENT_TODO("part 4", "estimate_direct_mis");

@@ -1,7 +1,8 @@
 // Part 4, step 1 (path): a camera ray's radiance is the emission it sees plus what its hit sends
 // back after at least one bounce. The bounces are step 2's: each check compares with the
 // student's own at_least_one_bounce_radiance on the same random numbers, so a bug of step 2 is on
-// both sides and costs this step nothing.
+// both sides and costs this step nothing; one that draws other numbers than rng gives (step 2's
+// draws_from_rng_only), and fails the comparison, is charged to step 2 (tests_rest_on_steps).
 #include <gtest/gtest.h>
 
 #include <algorithm>
