@@ -45,6 +45,19 @@ void charge_steps_at_fault(const PartSpec& spec, std::vector<StepResult>& steps)
     index[steps[i].step] = i;
     failing[i] = steps[i].failed() > 0;
   }
+  // Whether a step fails on a check that does not run step `k`: a later step is charged for a
+  // check of step k only then. Otherwise a bug of step k that shows in the later step's checks
+  // (a render that runs step k) would pass step k's own failures on to it.
+  auto fails_apart_from = [&](size_t j, int k) {
+    const StepSpec* st = spec.find_step(steps[j].step);
+    for (const CheckResult& c : steps[j].checks) {
+      if (c.skipped || c.pass) continue;
+      if (!st) return true;
+      const std::vector<int> rests = check_rests_on(*st, c);
+      if (std::find(rests.begin(), rests.end(), k) == rests.end()) return true;
+    }
+    return false;
+  };
   std::vector<std::map<size_t, Charge>> gave(steps.size()), took(steps.size());
   for (size_t i = 0; i < steps.size(); ++i) {
     StepResult& k = steps[i];
@@ -59,7 +72,8 @@ void charge_steps_at_fault(const PartSpec& spec, std::vector<StepResult>& steps)
       size_t at_fault = steps.size();
       for (int j : rests) {
         auto it = index.find(j);
-        if (j != k.step && it != index.end() && failing[it->second]) {
+        if (j != k.step && it != index.end() && failing[it->second] &&
+            (j < k.step || fails_apart_from(it->second, k.step))) {
           at_fault = it->second;
           break;
         }

@@ -16,7 +16,8 @@ namespace pt::grader {
 std::vector<int> check_rests_on(const StepSpec& spec, const CheckResult& check);
 
 /// Moves the share of every failing check that rests on another step of its part with
-/// failing checks of its own to the earliest such step, at most what that step has left
+/// failing checks of its own (for a later step: failing checks that do not run the check's step)
+/// to the earliest such step, at most what that step has left
 /// (its score never goes below 0; what it cannot take stays where the check is). The part's
 /// total never changes, so no submission can raise its score by breaking a step on purpose.
 /// Each step's message says what it was charged and for which checks, or what was charged away.

@@ -154,6 +154,28 @@ TEST(GraderStepAtFault, ALaterStepATestRunsIsChargedToo) {
       << steps[0].message;
 }
 
+// A later step whose only failures run the earlier step (a render of it) is not charged for the
+// earlier step's own failing tests: the earlier step's bug shows in both, and stays its own.
+TEST(GraderStepAtFault, ALaterStepFailingOnlyThroughThisOneIsNotCharged) {
+  PartSpec p = three_steps();
+  p.steps[0].tests_rest_on_steps = {3};
+  p.steps[1].tests_rest_on_steps = {};
+  std::vector<StepResult> steps =
+      scored(p, {{check("part1.step1.camera_ray.a", "test", false),
+                  check("part1.step1.camera_ray.b", "test", true)},
+                 {check("part1.step2.pixel_loop.a", "test", true)},
+                 {check("part1.step3.triangle.a", "test", true),
+                  check("part1.step3.render.box", "render", false)}});
+  const double before = total(steps);
+  charge_steps_at_fault(p, steps);
+  EXPECT_DOUBLE_EQ(total(steps), before);
+  // Step 1 loses its own 1.5 and takes 1.5 of the render's 3; the rest stays in step 3.
+  EXPECT_DOUBLE_EQ(steps[0].score, 0.0) << steps[0].message;
+  EXPECT_DOUBLE_EQ(steps[2].score, 4.5) << steps[2].message;
+  EXPECT_EQ(steps[0].message.find("which fails: fix that step first"), std::string::npos)
+      << steps[0].message;
+}
+
 // Whatever passes and fails, the part's total is the checks' and no step leaves [0, points]: a
 // submission cannot raise its score by breaking a step on purpose, even where two steps run each
 // other (which the manifest refuses).
