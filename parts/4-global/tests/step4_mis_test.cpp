@@ -3,6 +3,7 @@
 // rig found, shaded with the rig's Lambertian: no path (steps 1-3) and no student BSDF in it.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
 
 #include "framework/testing/draws_from_rng_only.h"
@@ -122,6 +123,36 @@ TEST(mis, takes_l_light_samples_and_l_bsdf_samples) {
     EXPECT_EQ(rig.query.intersect_calls + rig.query.occluded_calls, 2 * l)
         << "rays traced for one floor point under one area light: -l light samples (one shadow "
            "ray each) and -l BSDF samples (one ray each); light sampling alone traces -l";
+  }
+}
+
+// A point light is a light no ray can hit: its one sample keeps weight 1, since no BSDF sample
+// could have drawn it, and MIS gives exactly what light sampling gives for it, the irradiance law
+// ρ/π · I cosθ / d², with -l 1 and -l 4 (the BSDF samples find nothing).
+TEST(mis, a_light_no_ray_can_hit_keeps_weight_one) {
+  Scene s;
+  const uint32_t m = test::add_material(s, glm::vec3(0.5f));
+  test::add_quad(s, {-5, -5, 0}, {5, -5, 0}, {5, 5, 0}, {-5, 5, 0}, m);
+  Light l;
+  l.kind = LightKind::point;
+  l.position = glm::vec3(1.0f, 0.0f, 2.0f);
+  l.radiance = glm::vec3(10.0f);
+  s.lights.push_back(l);
+  test::Rig rig(s);
+  const double d2 = 1.0 + 4.0, cos_theta = 2.0 / std::sqrt(d2);
+  const double expected = 0.5 / M_PI * 10.0 * cos_theta / d2;
+  Ray r;
+  r.o = glm::vec3(0.0f, 0.0f, 3.0f);
+  r.d = glm::vec3(0.0f, 0.0f, -1.0f);
+  for (int n : {1, 4}) {
+    rig.ctx.light_samples = n;
+    Rng rng(3);
+    const glm::vec3 L = mis_at_hit(rig)(r, rng);
+    EXPECT_NEAR(L.x, expected, 1e-5 * expected)
+        << "-l " << n << ": a point light's sample under MIS gave " << L.x << " where light "
+        << "sampling gives " << expected << test::ratio_hint(L.x, expected, {})
+        << " (no BSDF sample can reach a point light, so its sample keeps weight 1: weigh only "
+           "the samples of a light ctx.lights says can_be_hit)";
   }
 }
 
