@@ -220,15 +220,18 @@ Manifest read_manifest(const std::string& path) {
       for (const StepSpec& st : p.steps)
         for (int k : st.tests_rest_on_steps) {
           const std::string sw = where + ", step " + std::to_string(st.step);
-          if (!p.find_step(k)) bad(path, sw, "tests_rest_on_steps names step " + std::to_string(k) + ", which the part does not have");
+          if (!p.find_step(k))
+            bad(path, sw, "tests_rest_on_steps names step " + std::to_string(k) +
+                              ", which the part does not have");
           std::vector<int> todo = {k};
           std::set<int> seen;
           while (!todo.empty()) {
             const int at = todo.back();
             todo.pop_back();
             if (at == st.step)
-              bad(path, sw, "its tests run step " + std::to_string(k) + ", whose tests run it in "
-                            "turn (tests_rest_on_steps): a failure would be charged back and forth");
+              bad(path, sw, "its tests run step " + std::to_string(k) +
+                                ", whose tests run it in turn (tests_rest_on_steps): a failure "
+                                "would be charged back and forth");
             if (seen.insert(at).second) todo.insert(todo.end(), runs[at].begin(), runs[at].end());
           }
         }

@@ -71,8 +71,8 @@ glm::vec3 estimate_direct_mis(const LightingContext& ctx, const ShadingPoint& sp
   // has the idea and the maths).
   // In: sp; ctx.lights (each light's samples, its density for a direction: pdf, what it sends
   // along a ray: emitted_along, whether a ray can hit it: can_be_hit), ctx.query,
-  // ctx.light_samples (-l); rng, the only source of random numbers. Out: radiance per channel, finite and >= 0, whose expectation is
-  // the direct-lighting integral at sp.
+  // ctx.light_samples (-l); rng, the only source of random numbers. Out: radiance per channel,
+  // finite and >= 0, whose expectation is the direct-lighting integral at sp.
   // What must hold, and is graded:
   // - a specular BSDF gets nothing, and no ray is traced for it;
   // - the light samples are those of estimate_direct_importance (ctx.light_samples per area

@@ -183,7 +183,8 @@ struct BruteForceAnswer {
 
 /// Brute force's answers for `rays` in `s`, computed once for every tree compared with them. In a
 /// probe none (probe_mode.h): the judge computes them itself.
-inline std::vector<BruteForceAnswer> brute_force_answers(const Scene& s, const std::vector<Ray>& rays) {
+inline std::vector<BruteForceAnswer> brute_force_answers(const Scene& s,
+                                                       const std::vector<Ray>& rays) {
   std::vector<BruteForceAnswer> answers;
   if (is_probe()) return answers;
   answers.resize(rays.size());

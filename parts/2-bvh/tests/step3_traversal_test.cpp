@@ -179,8 +179,9 @@ TEST_F(traversal, image_equals_brute_force_pixel_for_pixel) {
     const BruteForce bf(scene);
     const Bvh sah(scene), median(scene, BvhOptions{BvhSplitMethod::median, 1, 16, {}});
     // In a probe the judge renders brute force's image itself (probe_mode.h).
-    const std::vector<glm::dvec3> want =
-        test::is_probe() ? std::vector<glm::dvec3>() : test::render_normals(scene, bf, 48, 36, 4, 42);
+    const std::vector<glm::dvec3> want = test::is_probe()
+                                             ? std::vector<glm::dvec3>()
+                                             : test::render_normals(scene, bf, 48, 36, 4, 42);
     int lit = 0;
     for (const glm::dvec3& p : want) lit += p != glm::dvec3(0.0);
     EXPECT_GT(lit, 48 * 36 / 4) << "the camera should see the scene";
