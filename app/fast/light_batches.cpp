@@ -106,7 +106,7 @@ int sample_quad8(const SampledLight& l, const glm::vec3& p, const glm::vec2 u[8]
   for (int k = 0; k < 3; ++k) {
     second[k] = _mm256_and_ps(found, q[k]);
     second[3 + k] = _mm256_and_ps(
-        found, _mm256_add_ps(_mm256_mul_ps(splat(gamma(6)), wa_abs[k]), splat(l.quad_slack[k])));
+        found, _mm256_add_ps(_mm256_mul_ps(splat(gamma(6)), wa_abs[k]), splat(l.panel_slack[k])));
   }
   second[6] = _mm256_and_ps(found, splat(n.x));
   second[7] = _mm256_and_ps(found, splat(n.y));

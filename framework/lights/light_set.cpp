@@ -6,6 +6,7 @@
 #include <map>
 #include <string>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
@@ -310,12 +311,11 @@ bool sample_triangles(const SampledLight& l, const glm::vec3& p, glm::vec2 u, Li
 }
 
 // A point of a panel light: corner + u.x·edge_u + u.y·edge_v, uniform on the light's rectangle
-// (density 1 / area), one-sided. The terms' rounding is within γ6 of their sizes; where the
-// rectangle is the parallelogram the panel's two triangles tile, quad_slack covers the far
-// corner's distance from the parallelogram's.
+// (density 1 / area), one-sided. The terms' rounding is within γ6 of their sizes; panel_slack
+// widens the box to take in the panel's triangles (SampledLight says what it covers).
 bool sample_quad(const SampledLight& l, const glm::vec3& p, glm::vec2 u, LightSample* ls) {
   return finish_surface_sample(l, p, l.corner, u.x * l.edge_u, u.y * l.edge_v, l.normal, true,
-                               &l.quad_slack, ls);
+                               &l.panel_slack, ls);
 }
 
 // A panel's or mesh's sample from p into *ls (LightSample{} where its point cannot light p).
@@ -327,7 +327,7 @@ bool sample_quad(const SampledLight& l, const glm::vec3& p, glm::vec2 u, LightSa
 
 // Whether panel l's triangles are two that tile a parallelogram (sharing an edge, their far
 // corners x and y with x + y = the shared edge's ends, to rounding): if so, sets l's corner, edges
-// and quad_slack to it. Every course light's panel is such a quad.
+// and panel_slack to it. Every course light's panel is such a quad.
 void find_quad(SampledLight* l) {
   if (l->sampled_triangles.size() != 2) return;
   const SampledLight::SampledTriangle &t1 = l->sampled_triangles[0], &t2 = l->sampled_triangles[1];
@@ -358,8 +358,20 @@ void find_quad(SampledLight* l) {
   l->edge_v = s2 - c1[x];
   // The far corner's offset, and the rounding of computing it, both bound how far a point of the
   // parallelogram near it can be from the second triangle.
-  l->quad_slack = slack + gamma(3) * scale;
+  l->panel_slack = slack + gamma(3) * scale;
   l->quad = true;
+}
+
+// How far panel l's triangles reach from its rectangle's plane, per axis: each corner's distance
+// from the plane along the normal, plus γ7 of its coordinates (a triangle hit's error bound), so
+// that a ray ending short of a sample's error box widened by this ends short of the panel too.
+glm::vec3 panel_depth(const SampledLight& l) {
+  glm::vec3 depth(0.0f);
+  for (const SampledLight::SampledTriangle& t : l.sampled_triangles)
+    for (const glm::vec3& q : {t.a, t.b, t.c})
+      depth = glm::max(depth, std::abs(glm::dot(q - l.corner, l.normal)) * glm::abs(l.normal) +
+                                  gamma(7) * glm::abs(q));
+  return depth;
 }
 
 }  // namespace
@@ -449,13 +461,14 @@ LightSet::LightSet(const Scene& scene, const EnvironmentMap* environment)
         l.corner = panel_quad.corner;
         l.edge_u = panel_quad.edge_u;
         l.edge_v = panel_quad.edge_v;
-        l.quad_slack = panel_quad.quad_slack;
+        l.panel_slack = panel_quad.panel_slack;
         l.normal = panel_quad.sampled_triangles[0].n;
         l.area = 0.0f;
         for (float a : panel_areas[k]) l.area += a;
       }
     }
     l.quad = true;
+    l.panel_slack += panel_depth(l);
     for (uint32_t prim : l.triangles) primitive_light_[prim] = int(k);
   }
   for (auto& [material, m] : meshes) {
@@ -707,18 +720,23 @@ glm::vec3 LightSet::radiance_along(const Ray& ray, const SurfaceHit* hit) const 
 }
 
 bool LightSet::unoccluded(const RayQuery& query, const Ray& ray, int index) const {
-  // Every finite light's samples lie on its own surface (a panel light's on its rectangle, a
-  // mesh's on its triangles), and the shadow ray stops short of the sample's error box, so
-  // whatever the ray meets is a blocker, but for a panel light's own panel: it lies in the
-  // rectangle's plane and does not hide its light (as emitted_along says).
+  // Every finite light's samples lie on its own surface (a panel light's on its rectangle, with
+  // the panel inside each sample's error box; a mesh's on its triangles), and the shadow ray stops
+  // short of the sample's box, so whatever it meets is something else, in the way. Only a ray
+  // leaving from between a panel and its light's plane (within panel_slack of it) can meet the
+  // panel, which does not hide its light (as emitted_along says): it walks past it.
   if (!query.occluded(ray)) return true;
-  if (lights_[index].kind != SampledLightKind::panel) return false;
+  const SampledLight& l = lights_[index];
+  if (l.kind != SampledLightKind::panel ||
+      glm::dot(ray.o - l.corner, l.normal) > glm::dot(l.panel_slack, glm::abs(l.normal)))
+    return false;
   Ray rest = ray;
   SurfaceHit h;
   for (int i = 0; i < 8; ++i) {
     if (!query.intersect(rest, &h)) return true;
     if (light_of_primitive(h.primitive) != index) return false;
-    rest.tmin = h.t;
+    // Past the hit; at least a float further, for a query whose t rounds to the one before.
+    rest.tmin = std::max(h.t, std::nextafter(rest.tmin, std::numeric_limits<float>::infinity()));
   }
   return false;
 }

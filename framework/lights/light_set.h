@@ -86,11 +86,12 @@ struct SampledLight {
   // light's shape, its own parallelogram (the same rectangle, to rounding) stands for it.
   glm::vec3 corner{0.0f}, edge_u{0.0f}, edge_v{0.0f}, normal{0.0f};
   /// panel: always; its samples are corner + u.x·edge_u + u.y·edge_v, uniform on the light's
-  /// rectangle. Where that is the panel's own parallelogram, quad_slack bounds how far a point of
-  /// it can be from the two triangles (the far corner's rounding) and widens each sample's error
-  /// box; zero otherwise.
+  /// rectangle. panel_slack widens each sample's error box to take in the panel's triangles
+  /// there: their corners' distance from the rectangle's plane, the rounding of a ray's hit on
+  /// them and, where the rectangle is the panel's own parallelogram, its far corner's rounding. A
+  /// shadow ray stops short of its sample's box, so it never meets its own light's panel.
   bool quad = false;
-  glm::vec3 quad_slack{0.0f};
+  glm::vec3 panel_slack{0.0f};
   float area = 0.0f;                    ///< the surface it samples: parallelogram, triangles or sphere
   std::vector<uint32_t> triangles;      ///< panel, mesh: its triangles (primitive indices)
   Distribution1D triangle_pick;         ///< panel, mesh: by area
@@ -171,7 +172,8 @@ class LightSet {
   const std::vector<std::string>& warnings() const { return warnings_; }
 
   /// Whether nothing blocks the shadow ray `ray` built for a sample of light `index` (a panel
-  /// light's own panel does not).
+  /// light's own panel does not; it lies past the end of every shadow ray but those leaving from
+  /// between it and its light, panel_slack).
   bool unoccluded(const RayQuery& query, const Ray& ray, int index) const;
 
  private:

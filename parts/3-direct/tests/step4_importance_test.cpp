@@ -155,8 +155,8 @@ TEST(importance, an_area_light_takes_l_samples) {
     Rng rng(3);
     const glm::vec3 L = test::reflected_at_hit(rig, false, r, rng);
     EXPECT_GT(L.x, 0.0f);
-    // A shadow ray to a light with an emitting panel is a nearest-hit query (the panel it may hit
-    // is the light's own face, LightSet::unoccluded); the camera ray is the one other query.
+    // A shadow ray is an any-hit query (LightSet::unoccluded), the camera ray the one nearest-hit
+    // query; a student's own shadow test may ask either.
     const long shadow_rays = rig.query.intersect_calls - 1 + rig.query.occluded_calls;
     EXPECT_TRUE(shadow_rays == l)
         << shadow_rays << " shadow rays for one floor point under one area light with -l " << l
