@@ -181,10 +181,11 @@ int sample_quad8(const SampledLight& l, const glm::vec3& p, const glm::vec2 u[8]
 }
 #endif
 
-// Whether `ls` is, in every field through n and delta, `made`, and `hit`'s p, p_error and ng are
-// `from`: to the bit, in three 32-byte comparisons and two of 4 bytes where the build has AVX2.
-bool same_as_made(const SurfaceHit& hit, const LightSample& ls, const LightSample& made,
-                  const float from[9]) {
+}  // namespace
+
+// In three 32-byte comparisons and two of 4 bytes where the build has AVX2.
+bool LightBatches::same_as_made(const SurfaceHit& hit, const LightSample& ls,
+                                const LightSample& made, const float from[9]) {
   static_assert(offsetof(LightSample, n) + 3 * sizeof(float) == offsetof(LightSample, delta) &&
                     offsetof(SurfaceHit, ng) + 3 * sizeof(float) - offsetof(SurfaceHit, p) ==
                         9 * sizeof(float),
@@ -205,8 +206,6 @@ bool same_as_made(const SurfaceHit& hit, const LightSample& ls, const LightSampl
   return std::memcmp(s + 64, m + 64, 4) == 0 && ls.delta == made.delta &&
          std::memcmp(h + 32, f + 32, 4) == 0;
 }
-
-}  // namespace
 
 LightSample LightBatches::copy_of(const LightSample& ls) {
   LightSample out;
@@ -270,13 +269,7 @@ LightSample LightBatches::sample_anew(const LightSet& set, int index, const Surf
   return copy_of(batch_.at[0]);
 }
 
-Ray LightBatches::shadow_ray(const SurfaceHit& hit, const LightSample& ls) {
-  // The ray made with the sample last answered from the batch, if this is that sample (every
-  // field through n, and delta) asked from the point it was made for.
-  if (last_ >= 0 && (rays_made_ >> last_ & 1) && same_as_made(hit, ls, batch_.at[last_], from_)) {
-    ++rays_handed_out_;
-    return rays_.at[last_];
-  }
+Ray LightBatches::shadow_ray_anew(const SurfaceHit& hit, const LightSample& ls) {
   return std::isfinite(ls.distance) ? spawn_ray_to_in_lanes(hit, ls.wi, ls.p, ls.p_error, ls.n)
                                     : spawn_ray_in_lanes(hit, ls.wi);
 }

@@ -52,7 +52,16 @@ class LightBatches final : public FasterLightSampling {
     return sample_anew(set, index, hit, u);
   }
 
-  Ray shadow_ray(const SurfaceHit& hit, const LightSample& ls) override;
+  /// The ray made with the sample last answered from the batch, if this is that sample (every
+  /// field through n, and delta) asked from the point it was made for; else one made anew. Here,
+  /// not in light_batches.cpp, so a link-time optimised build can inline it where it is called.
+  Ray shadow_ray(const SurfaceHit& hit, const LightSample& ls) override {
+    if (last_ >= 0 && (rays_made_ >> last_ & 1) && same_as_made(hit, ls, batch_.at[last_], from_)) {
+      ++rays_handed_out_;
+      return rays_.at[last_];
+    }
+    return shadow_ray_anew(hit, ls);
+  }
 
   /// How many calls were answered from a batch, how many samples were made in one but never asked
   /// for, and how many shadow rays were handed out as made in a batch (tests).
@@ -65,6 +74,12 @@ class LightBatches final : public FasterLightSampling {
     return std::memcmp(&a, &b, sizeof(glm::vec3)) == 0;
   }
   static bool same_bits(glm::vec2 a, glm::vec2 b) { return std::memcmp(&a, &b, sizeof(glm::vec2)) == 0; }
+  /// Whether `ls` is, in every field through n and delta, `made`, and `hit`'s p, p_error and ng
+  /// are `from`, to the bit.
+  static bool same_as_made(const SurfaceHit& hit, const LightSample& ls, const LightSample& made,
+                           const float from[9]);
+  /// make_shadow_ray's ray for a sample the batch did not make, in SSE lanes (lane_rays.h).
+  [[gnu::noinline]] static Ray shadow_ray_anew(const SurfaceHit& hit, const LightSample& ls);
   /// `ls`, copied as the batch writes a sample (light_batches.cpp says why).
   static LightSample copy_of(const LightSample& ls);
   /// A call the batch does not answer: a new batch when foreseeing is on and pays, else one sample.

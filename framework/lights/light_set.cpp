@@ -719,13 +719,12 @@ glm::vec3 LightSet::radiance_along(const Ray& ray, const SurfaceHit* hit) const 
   return L;
 }
 
-bool LightSet::unoccluded(const RayQuery& query, const Ray& ray, int index) const {
+bool LightSet::meets_only_own_panel(const RayQuery& query, const Ray& ray, int index) const {
   // Every finite light's samples lie on its own surface (a panel light's on its rectangle, with
   // the panel inside each sample's error box; a mesh's on its triangles), and the shadow ray stops
   // short of the sample's box, so whatever it meets is something else, in the way. Only a ray
   // leaving from between a panel and its light's plane (within panel_slack of it) can meet the
   // panel, which does not hide its light (as emitted_along says): it walks past it.
-  if (!query.occluded(ray)) return true;
   const SampledLight& l = lights_[index];
   if (l.kind != SampledLightKind::panel ||
       glm::dot(ray.o - l.corner, l.normal) > glm::dot(l.panel_slack, glm::abs(l.normal)))

@@ -174,9 +174,14 @@ class LightSet {
   /// Whether nothing blocks the shadow ray `ray` built for a sample of light `index` (a panel
   /// light's own panel does not; it lies past the end of every shadow ray but those leaving from
   /// between it and its light, panel_slack).
-  bool unoccluded(const RayQuery& query, const Ray& ray, int index) const;
+  bool unoccluded(const RayQuery& query, const Ray& ray, int index) const {
+    return !query.occluded(ray) || meets_only_own_panel(query, ray, index);
+  }
 
  private:
+  /// For a shadow ray of light `index` that something blocks: whether all it meets is that
+  /// light's own panel.
+  bool meets_only_own_panel(const RayQuery& query, const Ray& ray, int index) const;
   /// sample() for every kind but panels and meshes.
   LightSample sample_other(const SampledLight& l, const SurfaceHit& hit, glm::vec2 u) const;
 
