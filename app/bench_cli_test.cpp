@@ -27,14 +27,14 @@ std::string project_scene(const char* name) {
 TEST(BenchCli, HelpNamesEveryCommand) {
   const pt::ChildResult run = bench({"--help"});
   EXPECT_EQ(run.exit_code, 0) << run.errors;
-  for (const char* command : {"rays", "render", "convergence", "agreement"})
+  for (const char* command : {"rays", "render", "convergence", "agreement", "layers"})
     EXPECT_NE(run.output.find(command), std::string::npos) << command << " missing from:\n" << run.output;
 }
 
 TEST(BenchCli, EachCommandHasItsOwnHelp) {
   const std::pair<const char*, const char*> cases[] = {
       {"rays", "--embree"}, {"render", "--repeat"}, {"convergence", "--budgets"},
-      {"agreement", "--hemisphere-samples"}};
+      {"agreement", "--hemisphere-samples"}, {"layers", "--seed"}};
   for (const auto& [command, option] : cases) {
     const pt::ChildResult run = bench({command, "--help"});
     EXPECT_EQ(run.exit_code, 0) << command << ": " << run.errors;
@@ -60,7 +60,7 @@ TEST(BenchCli, AMissingOrUnknownCommandIsNamed) {
     const std::string what = c.args.empty() ? "(no arguments)" : c.args.front();
     EXPECT_EQ(run.exit_code, 2) << what << ": " << run.describe() << "\n" << run.errors;
     EXPECT_NE(run.errors.find(c.must_mention), std::string::npos) << what << ":\n" << run.errors;
-    EXPECT_NE(run.errors.find("rays, render, convergence, agreement"), std::string::npos)
+    EXPECT_NE(run.errors.find("rays, render, convergence, agreement, layers"), std::string::npos)
         << what << ":\n" << run.errors;
     EXPECT_TRUE(run.output.empty()) << what << " printed on stdout:\n" << run.output;
   }
@@ -118,6 +118,30 @@ TEST(BenchCli, RaysTimesTheProjectScene) {
   const auto reread = nlohmann::json::parse(again.output, nullptr, false);
   ASSERT_TRUE(reread.is_object()) << again.output;
   EXPECT_EQ(reread["ray_counts"], out["ray_counts"]);
+}
+
+// The whole renderer, linked as the instructor's build links it (bench and pathtracer whole,
+// under PT_LTO), renders the course's scenes to the same bits whether the fast layer or the
+// framework's definitions answer its light samples and shadow rays.
+TEST(BenchCli, LayersRenderTheCourseScenesToTheSameBits) {
+#ifndef PT_HAVE_FAST_LIGHTS
+  GTEST_SKIP() << "this build has no fast layer (app/fast) to hold to the framework's bits";
+#else
+  std::vector<std::string> args = {"layers", "--threads", "2"};
+  const fs::path shared = pt::test::shared_scenes_dir();
+  if (fs::is_directory(shared))
+    for (const auto& entry : fs::recursive_directory_iterator(shared))
+      if (entry.path().extension() == ".dae") args.push_back(entry.path().string());
+  if (args.size() == 3)
+    GTEST_SKIP() << "the course's scenes are not at " << shared.string()
+                 << " (../shared/scenes/cs184 beside the project)";
+  const size_t scenes = args.size() - 3;
+  const pt::ChildResult run = bench(args);
+  EXPECT_EQ(run.exit_code, 0) << run.describe() << "\n" << run.output << run.errors;
+  const std::string all = std::to_string(4 * scenes);
+  EXPECT_NE(run.output.find(all + " of " + all + " renders the same"), std::string::npos)
+      << run.output;
+#endif
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// One of bench's subcommands (`bench rays`, `render`, `convergence`, `agreement`): the
+// One of bench's subcommands (`bench rays`, `render`, `convergence`, `agreement`, `layers`): the
 // subcommand added to bench's command line with its options, and what runs when it is chosen.
 #pragma once
 

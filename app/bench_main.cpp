@@ -1,6 +1,6 @@
 // bench: the project's measurements, one subcommand each: `rays` (BVH build and rays per second,
-// beside Embree), `render` (the speed report), `convergence` (error against time) and
-// `agreement` (do the sampling strategies render one image?).
+// beside Embree), `render` (the speed report), `convergence` (error against time), `agreement`
+// (do the sampling strategies render one image?) and `layers` (does the fast layer change a bit?).
 #include <cstring>
 #include <exception>
 #include <iostream>
@@ -11,6 +11,7 @@
 
 #include "app/cli_parse.h"
 #include "app/convergence.h"
+#include "app/layer_identity.h"
 #include "app/ray_benchmark.h"
 #include "app/speed_report.h"
 #include "app/strategy_agreement.h"
@@ -23,7 +24,8 @@ int run(int argc, char** argv) {
   app.require_subcommand(1);
   const std::vector<BenchCommand> commands = {add_rays_command(app), add_speed_report_command(app),
                                               add_convergence_command(app),
-                                              add_agreement_command(app)};
+                                              add_agreement_command(app),
+                                              add_layers_command(app)};
   app.footer("Run bench COMMAND --help for a command's options.");
   // No command, or a first word that is none (a scene, or the old `--render` form), is named as
   // such, where the parser would only say that an argument was not expected.

@@ -32,7 +32,7 @@ namespace {
 // the counter, an increment and a direct call, and no thread-local lookup.
 template <class Query>
 TracedRadianceFn counted_radiance(const RenderSettings& settings, const Scene& scene,
-                                  const Query& query) {
+                                  const Query& query, LightLayer layer) {
   if (settings.shading == ShadingMode::normals) {
     return [&query](const Ray& ray, Rng&, TraceContext& context) {
       const LocalCountingRayQuery<Query> counting(query);
@@ -45,16 +45,25 @@ TracedRadianceFn counted_radiance(const RenderSettings& settings, const Scene& s
   std::shared_ptr<Integrator> integrator = Integrator::create(settings, scene, query, &error);
   if (!integrator) throw std::runtime_error(error);
   const int light_samples = std::max(1, settings.light_samples);
-  return [integrator, &query, light_samples](const Ray& ray, Rng& rng, TraceContext& context) {
-    const LocalCountingRayQuery<Query> counting(query);
 #ifdef PT_HAVE_FAST_LIGHTS
-    // The camera sample's light samples and shadow rays in lanes and batches, foreseen from the
-    // generator its estimate draws from: the framework's definitions' answers, to the bit.
-    LightBatches batches(&rng, light_samples);
-    const FasterLightSampling::Installed installed(batches);
+  if (layer == LightLayer::fast) {
+    return [integrator, &query, light_samples](const Ray& ray, Rng& rng, TraceContext& context) {
+      const LocalCountingRayQuery<Query> counting(query);
+      // The camera sample's light samples and shadow rays in lanes and batches, foreseen from the
+      // generator its estimate draws from: the framework's definitions' answers, to the bit.
+      LightBatches batches(&rng, light_samples);
+      const FasterLightSampling::Installed installed(batches);
+      const glm::vec3 L = integrator->radiance(ray, rng, counting);
+      context.rays.add(counting.count());
+      return L;
+    };
+  }
 #else
-    (void)light_samples;
+  (void)layer;
+  (void)light_samples;
 #endif
+  return [integrator, &query](const Ray& ray, Rng& rng, TraceContext& context) {
+    const LocalCountingRayQuery<Query> counting(query);
     const glm::vec3 L = integrator->radiance(ray, rng, counting);
     context.rays.add(counting.count());
     return L;
@@ -64,12 +73,12 @@ TracedRadianceFn counted_radiance(const RenderSettings& settings, const Scene& s
 }  // namespace
 
 TracedRadianceFn make_radiance(const RenderSettings& settings, const Scene& scene,
-                               const RayQuery& query) {
+                               const RayQuery& query, LightLayer layer) {
 #ifdef PT_HAVE_WIDE_BVH
   if (const auto* wide = dynamic_cast<const WideBvh*>(&query))
-    return counted_radiance(settings, scene, *wide);
+    return counted_radiance(settings, scene, *wide, layer);
 #endif
-  return counted_radiance(settings, scene, query);
+  return counted_radiance(settings, scene, query, layer);
 }
 
 std::string no_light_warning(const RenderSettings& settings, const Scene& scene) {

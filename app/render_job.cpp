@@ -6,8 +6,9 @@
 namespace pt {
 
 RenderReport render_scene(const RenderSettings& settings, const Scene& scene,
-                          const RayQuery& query, Film* film, const TileRenderOptions& options) {
-  const TracedRadianceFn radiance = make_radiance(settings, scene, query);
+                          const RayQuery& query, Film* film, const TileRenderOptions& options,
+                          LightLayer layer) {
+  const TracedRadianceFn radiance = make_radiance(settings, scene, query, layer);
   return render_tiles(settings, make_pixel_fn(settings, scene.camera, radiance), film, options);
 }
 

@@ -2,6 +2,7 @@
 // shared by pathtracer and bench so that what bench times is what pathtracer renders.
 #pragma once
 
+#include "app/radiance.h"
 #include "framework/geometry/ray_query.h"
 #include "framework/render/film.h"
 #include "framework/render/render_settings.h"
@@ -14,6 +15,7 @@ namespace pt {
 /// settings.width × settings.height: make_radiance, make_pixel_fn and render_tiles in one call.
 RenderReport render_scene(const RenderSettings& settings, const Scene& scene,
                           const RayQuery& query, Film* film,
-                          const TileRenderOptions& options = {});
+                          const TileRenderOptions& options = {},
+                          LightLayer layer = LightLayer::fast);
 
 }  // namespace pt
