@@ -16,6 +16,7 @@
 #include "framework/scene/scene_error.h"
 
 namespace pt {
+#ifdef PT_HAVE_FAST_LIGHTS
 namespace {
 
 // The settings each scene is rendered at: every way a light sample or shadow ray is asked for
@@ -36,6 +37,7 @@ bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
 }
 
 }  // namespace
+#endif
 
 BenchCommand add_layers_command(CLI::App& bench) {
   struct State {
