@@ -44,30 +44,27 @@ TracedRadianceFn counted_radiance(const RenderSettings& settings, const Scene& s
   std::string error;
   std::shared_ptr<Integrator> integrator = Integrator::create(settings, scene, query, &error);
   if (!integrator) throw std::runtime_error(error);
-  const int light_samples = std::max(1, settings.light_samples);
-#ifdef PT_HAVE_FAST_LIGHTS
-  if (layer == LightLayer::fast) {
-    return [integrator, &query, light_samples](const Ray& ray, Rng& rng, TraceContext& context) {
-      const LocalCountingRayQuery<Query> counting(query);
-      // The camera sample's light samples and shadow rays in lanes and batches, foreseen from the
-      // generator its estimate draws from: the framework's definitions' answers, to the bit.
-      LightBatches batches(&rng, light_samples);
-      const FasterLightSampling::Installed installed(batches);
-      const glm::vec3 L = integrator->radiance(ray, rng, counting);
-      context.rays.add(counting.count());
-      return L;
-    };
-  }
-#else
-  (void)layer;
-  (void)light_samples;
-#endif
-  return [integrator, &query](const Ray& ray, Rng& rng, TraceContext& context) {
+  auto trace = [integrator, &query](const Ray& ray, Rng& rng, TraceContext& context) {
     const LocalCountingRayQuery<Query> counting(query);
     const glm::vec3 L = integrator->radiance(ray, rng, counting);
     context.rays.add(counting.count());
     return L;
   };
+#ifdef PT_HAVE_FAST_LIGHTS
+  if (layer == LightLayer::fast) {
+    const int light_samples = std::max(1, settings.light_samples);
+    return [trace, light_samples](const Ray& ray, Rng& rng, TraceContext& context) {
+      // The camera sample's light samples and shadow rays in lanes and batches, foreseen from the
+      // generator its estimate draws from: the framework's definitions' answers, to the bit.
+      LightBatches batches(&rng, light_samples);
+      const FasterLightSampling::Installed installed(batches);
+      return trace(ray, rng, context);
+    };
+  }
+#else
+  (void)layer;
+#endif
+  return trace;
 }
 
 }  // namespace
