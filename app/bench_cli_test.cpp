@@ -120,6 +120,22 @@ TEST(BenchCli, RaysTimesTheProjectScene) {
   EXPECT_EQ(reread["ray_counts"], out["ray_counts"]);
 }
 
+// A scene that is not there is named, as an error of the input (exit 1), and a resolution out of
+// range is refused by the command line (exit 2).
+TEST(BenchCli, LayersNamesAMissingSceneAndRefusesAnEmptyImage) {
+#ifndef PT_HAVE_FAST_LIGHTS
+  GTEST_SKIP() << "this build has no fast layer: bench layers compares nothing and exits 2";
+#else
+  const pt::ChildResult missing = bench({"layers", "no_such_scene.dae", "--threads", "1"});
+  EXPECT_EQ(missing.exit_code, 1) << missing.describe() << "\n" << missing.errors;
+  EXPECT_NE(missing.errors.find("no_such_scene.dae"), std::string::npos) << missing.errors;
+  const pt::ChildResult empty =
+      bench({"layers", project_scene("cornell_spheres.dae"), "-r", "0", "48"});
+  EXPECT_EQ(empty.exit_code, 2) << empty.describe() << "\n" << empty.errors;
+  EXPECT_NE(empty.errors.find("--resolution"), std::string::npos) << empty.errors;
+#endif
+}
+
 // The whole renderer, linked as the instructor's build links it (bench and pathtracer whole,
 // under PT_LTO), renders the course's scenes to the same bits whether the fast layer or the
 // framework's definitions answer its light samples and shadow rays.
