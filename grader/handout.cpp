@@ -90,6 +90,21 @@ std::vector<std::string> tracked_files(const std::string& source_dir) {
   return list;
 }
 
+std::string student_package_list(const std::string& text) {
+  std::istringstream in(text);
+  std::string out, line;
+  while (std::getline(in, line)) {
+    std::istringstream words(line);
+    std::string name, setups;
+    words >> name >> setups;
+    bool keep = name.empty() || name[0] == '#';
+    for (std::istringstream list(setups); !keep && std::getline(list, name, ',');)
+      keep = name == "student" || name == "all";
+    if (keep) out += line + "\n";
+  }
+  return out;
+}
+
 HandoutSummary make_handout(const std::string& source_dir, const std::string& out_dir) {
   fs::path src = fs::absolute(source_dir), dst = fs::absolute(out_dir);
   if (fs::exists(dst) && !fs::is_empty(dst))
@@ -111,6 +126,7 @@ HandoutSummary make_handout(const std::string& source_dir, const std::string& ou
       continue;
     }
     if (source) text = strip_solution(text, rel, &summary.blocks);
+    if (rel == "tools/packages.list") text = student_package_list(text);
     fs::path to = dst / rel;
     fs::create_directories(to.parent_path());
     std::ofstream out(to, std::ios::binary);

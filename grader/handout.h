@@ -25,6 +25,11 @@ bool in_solution_only_folder(const std::filesystem::path& root, const std::strin
 /// and the line of a marker without its pair. `blocks` counts the blocks removed.
 std::string strip_solution(const std::string& text, const std::string& path, int* blocks = nullptr);
 
+/// The handout's tools/packages.list: the lines of the student's set-up ("student" or "all"
+/// among a line's comma-separated set-ups) and the comments; the course's own checks' packages
+/// (the grading image's, the developers') are not a student's to install.
+std::string student_package_list(const std::string& text);
+
 /// The files git tracks in `source_dir`, relative to it. Throws std::runtime_error when it is
 /// not a git checkout.
 std::vector<std::string> tracked_files(const std::string& source_dir);

@@ -1,15 +1,15 @@
 #!/usr/bin/env bash
 # The autograder's setup: Gradescope runs it once, as root, when it builds the image, with this
-# bundle unpacked in $ROOT/source. It installs what grading needs, builds the instructor's tree
+# bundle unpacked in $ROOT/source. It installs what grading needs, builds the instructor's
 # tree's grader once, then `grader autograde-setup` records what grading trusts (the student
 # files, their stubs, a copy of the grader and of the solution) where the student's code cannot
 # read it, takes the solution out of the tree and builds what grading runs.
 #
 # Target: Ubuntu 22.04 "jammy", Gradescope's default base image; it also runs on Debian 12
-# "bookworm", the project's own machines, where CI runs it. The packages are the grading subset of
-# tools/setup.sh, under names both releases share. The differences are handled here: Ubuntu keeps
-# CLI11 in "universe" (enabled when a package has no candidate), and the write-up's packages
-# (chromium, npm, cmark) are not needed to grade, so the bundle leaves website/ out.
+# "bookworm", the project's own machines, where CI runs it on an empty root (tools/fresh_root).
+# The packages are the project's one list's "grading" lines (project/tools/packages.list),
+# installed by the project's own tools/setup.sh, which names any package the system lacks. The
+# write-up's packages (chromium, npm, cmark) are not needed to grade: the bundle leaves website/ out.
 #
 # Variables: PT_AUTOGRADER_ROOT (default /autograder) is the root folder, so CI runs the same
 # script under a temporary folder; PT_SKIP_PACKAGES=1 skips apt-get (a machine that has them);
@@ -21,29 +21,15 @@ PT="$ROOT/pt"
 JOBS="${PT_JOBS:-$(nproc)}"
 say() { echo "setup.sh: $*" >&2; }
 
-packages=(
-  build-essential cmake ninja-build pkg-config zip
-  libglm-dev libopenimageio-dev libtbb-dev libpugixml-dev libcli11-dev nlohmann-json3-dev
-  libcgal-dev libgmp-dev libmpfr-dev libboost-dev
-  libgtest-dev libgmock-dev
-)
+[ -f "$SRC/project/CMakeLists.txt" ] || { say "no project in $SRC/project: is the bundle unpacked there?"; exit 2; }
 if [ "${PT_SKIP_PACKAGES:-0}" != 1 ]; then
-  export DEBIAN_FRONTEND=noninteractive
-  apt-get update -qq
-  missing=()
-  for p in "${packages[@]}"; do
-    apt-cache policy "$p" 2>/dev/null | grep -q 'Candidate: [^(]' || missing+=("$p")
-  done
-  if [ "${#missing[@]}" -gt 0 ] && grep -qi ubuntu /etc/os-release; then
-    say "no candidate for ${missing[*]}: enabling Ubuntu's universe"
-    apt-get install -y -qq --no-install-recommends software-properties-common >/dev/null
-    add-apt-repository -y universe >/dev/null
-    apt-get update -qq
-  fi
-  apt-get install -y -qq --no-install-recommends "${packages[@]}" >/dev/null
+  say "installing the grading packages of project/tools/packages.list"
+  bash "$SRC/project/tools/setup.sh" --for grading || {
+    say "the packages could not be installed (the lines above say which and why)"
+    exit 1
+  }
 fi
 
-[ -f "$SRC/project/CMakeLists.txt" ] || { say "no project in $SRC/project: is the bundle unpacked there?"; exit 2; }
 mkdir -p "$PT/private"
 # The solution copy the isolated build links the other parts from (PT_SOLUTION_DIR).
 rm -rf "$PT/private/solution"

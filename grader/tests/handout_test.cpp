@@ -26,6 +26,22 @@ TEST(GraderHandout, SolutionBlocksGoAndStubsStay) {
   EXPECT_EQ(strip_solution("no markers\n", "g.cpp"), "no markers\n");
 }
 
+TEST(GraderHandout, PackageListKeepsTheStudentsLines) {
+  std::string list =
+      "# comment: every set-up\n"
+      "\n"
+      "cmake            all                the build\n"
+      "libcmark-dev     student,developer  the write-up\n"
+      "zip              developer          the bundle\n"
+      "zipinfo          students,grading   a set-up named like the student's is not it\n";
+  std::string out = student_package_list(list);
+  EXPECT_EQ(out,
+            "# comment: every set-up\n"
+            "\n"
+            "cmake            all                the build\n"
+            "libcmark-dev     student,developer  the write-up\n");
+}
+
 TEST(GraderHandout, UnbalancedMarkersNameFileAndLine) {
   EXPECT_THROW(strip_solution("a\n// BEGIN SOLUTION\nb\n", "p.cpp"), std::runtime_error);
   try {
