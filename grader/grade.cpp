@@ -16,9 +16,11 @@
 #include <unistd.h>
 
 #include <pugixml.hpp>
+#include <xxhash.h>
 
 #include "framework/image/estimate_exr.h"
 #include "framework/image/image.h"
+#include "framework/text/text_file.h"
 #include "grader/process/child_process.h"
 #include "framework/stats/variance_consistency.h"
 #include "grader/compare.h"
@@ -83,7 +85,7 @@ std::string first_failure(const std::string& output) {
         lines[i].find("error:") == std::string::npos)
       continue;
     std::string s;
-    for (size_t k = i; k < lines.size() && k < i + 6; ++k) {
+    for (size_t k = i; k < lines.size() && k < i + 40; ++k) {
       if (k > i && lines[k].rfind("[  ", 0) == 0) break;  // the next gtest status line
       s += (s.empty() ? "" : "\n") + lines[k];
     }
@@ -146,6 +148,11 @@ std::string student_lines(const std::string& output) {
   return s;
 }
 
+/// A skipped check's message: why it could not run, and that it costs nothing.
+std::string skipped_message(const std::string& why) {
+  return "not counted (the step's points are shared among its checks that ran): " + why;
+}
+
 /// Part N's step tests, each run as a probe of the student's code and decided by its judge
 /// (grader/judged_tests.h): in the sandbox when the bundle grades, else as the grader's user.
 std::vector<CheckResult> run_judged(int part, const PartSpec& spec, const GradeOptions& options,
@@ -189,10 +196,13 @@ std::vector<CheckResult> run_judged(int part, const PartSpec& spec, const GradeO
     r.name = tests[i].name;
     r.seconds = outcomes[i].seconds;
     r.pass = outcomes[i].pass;
-    if (!r.pass) {
+    r.skipped = outcomes[i].skipped;
+    if (r.skipped) {
+      r.output = skipped_message(
+          bounded(relative_to(outcomes[i].message, options.source_dir), kCheckMessageChars));
+    } else if (!r.pass) {
       r.output = bounded(relative_to(outcomes[i].message, options.source_dir), kCheckMessageChars);
-      std::string todo = student_lines(outcomes[i].student_output);
-      if (!todo.empty()) r.output += "\n" + todo;
+      r.todo = student_lines(outcomes[i].student_output);
     }
     checks.push_back(r);
   }
@@ -230,9 +240,9 @@ std::vector<CheckResult> run_tests(int part, const PartSpec& spec, const GradeOp
     r.skipped = t.child("skipped") || status == "disabled" || status == "notrun";
     r.pass = !r.skipped && !t.child("failure") && !t.child("error") && status != "fail";
     if (r.skipped) {
-      r.output = "skipped";
-      std::string why = first_failure(out);
-      if (out.find("SKIPPED") != std::string::npos) r.output = "skipped (GTEST_SKIP)";
+      const std::string why = gtest_skip_reason(out);
+      r.output = skipped_message(why.empty() ? "the test did not run"
+                                              : relative_to(why, options.source_dir));
     } else if (!r.pass) {
       std::string f = first_failure(out);
       std::string message = t.child("failure").attribute("message").as_string();
@@ -244,9 +254,8 @@ std::vector<CheckResult> run_tests(int part, const PartSpec& spec, const GradeOp
                  out.find("Exception") != std::string::npos)
           f = "crashed (" + (message.empty() ? std::string("signal") : message) + ")";
       }
-      r.output = relative_to(f, options.source_dir);
-      std::string todo = not_implemented_lines(out);
-      if (!todo.empty()) r.output += "\n" + todo;
+      r.output = bounded(relative_to(f, options.source_dir), kCheckMessageChars);
+      r.todo = student_lines(out);
     }
     checks.push_back(r);
   }
@@ -265,6 +274,24 @@ int StepResult::failed() const {
   int n = 0;
   for (const CheckResult& c : checks) n += (!c.skipped && !c.pass) ? 1 : 0;
   return n;
+}
+
+int StepResult::skipped() const { return int(checks.size()) - counted(); }
+
+double StepResult::skipped_points() const {
+  return checks.empty() ? 0.0 : max_score * double(skipped()) / double(checks.size());
+}
+
+int PartResult::skipped_checks() const {
+  int n = 0;
+  for (const StepResult& r : steps) n += r.skipped();
+  return n;
+}
+
+double PartResult::skipped_points() const {
+  double s = 0.0;
+  for (const StepResult& r : steps) s += r.skipped_points();
+  return s;
 }
 
 double PartResult::score() const {
@@ -327,9 +354,22 @@ StepResult score_step(const StepSpec& spec, std::vector<CheckResult> checks) {
   r.max_score = spec.points;
   r.checks = std::move(checks);
   const int counted = r.counted(), failed = r.failed();
+  // Why checks were skipped, each reason once: what the student can do to run them.
+  std::string skips;
+  {
+    std::set<std::string> seen;
+    for (const CheckResult& c : r.checks)
+      if (c.skipped && seen.insert(c.output).second && seen.size() <= 2)
+        skips += "\n  " + c.name + ": " + c.output;
+  }
+  const std::string skipped_line =
+      r.skipped() == 0 ? ""
+                       : "\n" + std::to_string(r.skipped()) + " of " +
+                             std::to_string(r.checks.size()) + " checks skipped:" + skips;
   if (counted == 0) {
     r.message = r.checks.empty() ? "no check of this step ran (none was built or registered)"
-                                 : "every check of this step was skipped: nothing to score";
+                                 : "every check of this step was skipped: nothing to score" +
+                                       skipped_line;
     return r;
   }
   r.score = spec.points * double(counted - failed) / double(counted);
@@ -339,13 +379,12 @@ StepResult score_step(const StepSpec& spec, std::vector<CheckResult> checks) {
     std::string broken;
     for (const Rule* rule : rules_enforced_by(spec, c.name))
       broken += "\nThe rule it checks, #" + rule->id + ": " + rule->text;
-    // Before the "not implemented" lines, which the step's message gives once, below.
-    c.output.insert(std::min(c.output.find("\n    "), c.output.size()), broken);
+    c.output += broken;
   }
   std::set<std::string> todo_seen;
   std::string todo;
   for (const CheckResult& c : r.checks) {
-    std::istringstream in(c.output);
+    std::istringstream in(c.todo);
     for (std::string line; std::getline(in, line);)
       if (line.find("not implemented") != std::string::npos) {
         size_t start = line.find_first_not_of(' ');
@@ -353,12 +392,10 @@ StepResult score_step(const StepSpec& spec, std::vector<CheckResult> checks) {
         if (todo_seen.insert(l).second && todo_seen.size() <= 4) todo += "\n" + l;
       }
   }
+  // The first failing check whole: what it expected and what came back, then its rule.
   for (const CheckResult& c : r.checks) {
     if (c.skipped || c.pass) continue;
-    std::string first = c.output;
-    size_t cut = first.find("\n    ");  // the not-implemented lines come once, below
-    std::string head = first.substr(0, cut);
-    r.message = c.name + ": " + head;
+    r.message = c.name + ": " + c.output;
     break;
   }
   if (failed > 0) {
@@ -367,6 +404,7 @@ StepResult score_step(const StepSpec& spec, std::vector<CheckResult> checks) {
   } else {
     r.message = "all " + std::to_string(counted) + " checks pass";
   }
+  r.message += skipped_line;
   return r;
 }
 
@@ -381,10 +419,38 @@ std::string not_implemented_lines(const std::string& output) {
   return s;
 }
 
+namespace {
+
+std::string parts_list(const std::vector<int>& parts) {
+  std::string s = parts.size() > 1 ? "Parts " : "Part ";
+  for (size_t i = 0; i < parts.size(); ++i)
+    s += (i == 0 ? "" : i + 1 == parts.size() ? " and " : ", ") + std::to_string(parts[i]);
+  return s;
+}
+
+/// What a render that fails with every earlier step of its part passing should say: look at this
+/// step, unless an earlier part it runs fails (or is not known to pass).
+std::string look_here_or_earlier(const EarlierParts& parts, const std::string& lead) {
+  if (!parts.failing.empty())
+    return lead + ", but it also runs your " + parts_list(parts.failing) + ", which " +
+           (parts.failing.size() > 1 ? "fail" : "fails") +
+           " (as last graded): fix that first, this render may fail for it.";
+  std::string s = lead + ", so look first at this step's code.";
+  if (!parts.unknown.empty())
+    s += " It also runs your " + parts_list(parts.unknown) +
+         ", not graded since its files last changed: grade " +
+         (parts.unknown.size() > 1 ? "them" : "it") + " to know whether " +
+         (parts.unknown.size() > 1 ? "they pass." : "it passes.");
+  return s;
+}
+
+}  // namespace
+
 std::string render_rests_on_line(const PartSpec& spec, const RenderCheck& check,
-                                 const std::vector<std::pair<int, int>>& tests_failed_of) {
+                                 const std::vector<std::pair<int, int>>& tests_failed_of,
+                                 const EarlierParts& parts) {
   if (check.rests_on_steps.empty())
-    return "This render runs only this step's functions (and earlier parts').";
+    return look_here_or_earlier(parts, "This render runs only this step's functions of this part");
   std::string line = "This render also runs this part's step";
   line += check.rests_on_steps.size() > 1 ? "s " : " ";
   bool any_failing = false;
@@ -406,9 +472,10 @@ std::string render_rests_on_line(const PartSpec& spec, const RenderCheck& check,
     any_failing = any_failing || failed > 0 || counted == 0;
     line += ")";
   }
-  return line + (any_failing ? ": fix the failing step first, this render may fail for it "
-                               "(while it fails, the render's points are charged to it)."
-                             : ": their checks pass, so look first at this step's code.");
+  if (any_failing)
+    return line + ": fix the failing step first, this render may fail for it "
+                  "(while it fails, the render's points are charged to it).";
+  return look_here_or_earlier(parts, line + ": their checks pass");
 }
 
 CheckResult grade_render(const Manifest& manifest, const RenderCheck& check,
@@ -420,7 +487,9 @@ CheckResult grade_render(const Manifest& manifest, const RenderCheck& check,
   fs::path scene = scene_path(check, options);
   if (check.course_scene && !fs::exists(scene)) {
     r.skipped = true;
-    r.output = "skipped: the course scene " + scene.string() + " is not there";
+    r.output = skipped_message("the course's scene " + check.scene +
+                               " is not there: put the course's scenes at "
+                               "../shared/scenes/cs184 (beside the project) and grade again");
     return r;
   }
   fs::path reference = fs::path(options.source_dir) / check.reference;
@@ -492,17 +561,18 @@ CheckResult grade_render(const Manifest& manifest, const RenderCheck& check,
     }
   } cleanup{options.sandbox, scratch};
   r.seconds = c.seconds;
-  std::string todo = not_implemented_lines(c.output);
+  r.todo = student_lines(c.output);
   if (!c.ok()) {
-    r.output = "the render " + c.describe() + ": " + command_line(argv) + "\n" +
-               (todo.empty() ? output_excerpt(c.output, 8) : todo);
+    r.output = "the render " + c.describe() + ": " + command_line(argv) +
+               (r.todo.empty() ? "\n" + output_excerpt(c.output, 8) : "");
     return r;
   }
   // A stub of this part that ran is not the student's answer. No stub gives a right image (that
   // is the guard a submission cannot silence); the stub also says so itself (PT_STUDENT_TODO),
   // once per process, and a render that says so fails at once.
   if (c.output.find("part " + std::to_string(check.part) + " not implemented") != std::string::npos) {
-    r.output = "the render ran this part's unwritten stubs, so it shows no code of yours:\n" + todo;
+    r.output = "the render ran this part's unwritten stubs (their lines are below), so it shows "
+               "no code of yours";
     return r;
   }
   if (variant) {
@@ -564,7 +634,6 @@ CheckResult grade_render(const Manifest& manifest, const RenderCheck& check,
       r.output = noise;
     }
   }
-  if (!todo.empty()) r.output += "\n" + todo;
   return r;
 }
 
@@ -633,15 +702,21 @@ PartResult grade_part(const Manifest& manifest, int part, const GradeOptions& op
         ++tests_failed_of[k].second;
         tests_failed_of[k].first += !c.pass;
       }
+  const EarlierParts earlier = earlier_parts(manifest, part, options);
   for (const StepSpec& st : spec->steps) {
     for (const RenderCheck& check : st.renders) {
       CheckResult c = grade_render(manifest, check, options);
       if (!c.pass && !c.skipped && options.run_tests)
-        c.output += "\n" + render_rests_on_line(*spec, check, tests_failed_of);
+        c.output += "\n" + render_rests_on_line(*spec, check, tests_failed_of, earlier);
       by_step[size_t(st.step)].push_back(std::move(c));
     }
     StepResult r = score_step(st, std::move(by_step[size_t(st.step)]));
     if (!test_problem.empty() && r.counted() == 0) r.message = test_problem;
+    if (options.skip_is_error)
+      for (const CheckResult& c : r.checks)
+        if (c.skipped)
+          throw std::runtime_error("the check " + c.name + " could not run (" + c.output +
+                                   "): the bundle must ship everything its checks need");
     result.steps.push_back(std::move(r));
   }
   charge_steps_at_fault(*spec, result.steps);
@@ -651,22 +726,6 @@ PartResult grade_part(const Manifest& manifest, int part, const GradeOptions& op
 }
 
 namespace {
-
-/// The newest modification time of a part's files, as seconds since the epoch.
-double newest_file_time(const fs::path& folder) {
-  double newest = 0.0;
-  std::error_code ec;
-  if (!fs::exists(folder, ec)) return newest;
-  for (const auto& e : fs::recursive_directory_iterator(folder, ec)) {
-    if (!e.is_regular_file(ec)) continue;
-    auto t = fs::last_write_time(e.path(), ec);
-    if (ec) continue;
-    auto sys = std::chrono::time_point_cast<std::chrono::seconds>(
-        t - fs::file_time_type::clock::now() + std::chrono::system_clock::now());
-    newest = std::max(newest, double(sys.time_since_epoch().count()));
-  }
-  return newest;
-}
 
 fs::path part_folder(int part, const GradeOptions& options) {
   std::error_code ec;
@@ -681,6 +740,13 @@ std::string clock_time(double epoch) {
   char buf[32];
   std::strftime(buf, sizeof buf, "%H:%M", std::localtime(&t));
   return buf;
+}
+
+/// Whether part `part`'s files are no longer those its record in state.json was graded on.
+bool changed_since_graded(const nlohmann::json& record, int part, const GradeOptions& options) {
+  const fs::path folder = part_folder(part, options);
+  if (folder.empty() || !record.contains("files") || !record["files"].is_string()) return false;
+  return record["files"].get<std::string>() != folder_fingerprint(folder.string());
 }
 
 nlohmann::json read_state(const GradeOptions& options) {
@@ -723,11 +789,26 @@ std::string rests_on_line(const Manifest& manifest, int part, const GradeOptions
     else line += " has " + std::to_string(failing) + " failing step" + (failing == 1 ? "" : "s");
     line += " (" + clock_time(when);
     if (s.value("isolated", false)) line += ", isolated";
-    fs::path folder = part_folder(k, options);
-    if (!folder.empty() && newest_file_time(folder) > when) line += ", changed since";
+    if (changed_since_graded(s, k, options)) line += ", changed since";
     line += ")";
   }
   return line + ".";
+}
+
+EarlierParts earlier_parts(const Manifest& manifest, int part, const GradeOptions& options) {
+  EarlierParts parts;
+  const PartSpec* spec = manifest.find_part(part);
+  if (!spec || options.isolated) return parts;
+  const nlohmann::json state = read_state(options);
+  for (int k : spec->renders_rest_on) {
+    const std::string key = std::to_string(k);
+    if (!state.contains(key) || !state[key].is_object() ||
+        changed_since_graded(state[key], k, options))
+      parts.unknown.push_back(k);
+    else if (!state[key].value("built", true) || state[key].value("failing_steps", 0) > 0)
+      parts.failing.push_back(k);
+  }
+  return parts;
 }
 
 void compare_with_gradescope(const Manifest& manifest, PartResult& result,
@@ -742,6 +823,12 @@ void compare_with_gradescope(const Manifest& manifest, PartResult& result,
     if (!state.contains(key) || !state[key].is_object()) return false;
     return !state[key].value("built", true) || state[key].value("failing_steps", 0) > 0;
   };
+  result.changed_parts_run.clear();
+  for (int k : spec->renders_rest_on) {
+    const std::string key = std::to_string(k);
+    if (failing(k) && changed_since_graded(state[key], k, options))
+      result.changed_parts_run.push_back(k);
+  }
   // With a complete solution apart (PT_SOLUTION_DIR), the tests run it, not the student's.
   const bool tests_run_students = !has_separate_solution(options.build_dir).value_or(false);
   std::set<int> ran;
@@ -779,6 +866,10 @@ void record_state(const PartResult& result, const GradeOptions& options) {
                                         {"score", result.score()},
                                         {"max_score", result.max_score()},
                                         {"isolated", options.isolated}};
+  // The files graded, by content: an edit and its undo within one second (a clock's step) are
+  // still told apart from what was graded.
+  const fs::path folder = part_folder(result.part, options);
+  if (!folder.empty()) state[std::to_string(result.part)]["files"] = folder_fingerprint(folder.string());
   fs::create_directories(options.out_dir);
   std::ofstream(fs::path(options.out_dir) / "state.json") << state.dump(2) << "\n";
 }
@@ -876,6 +967,35 @@ bool make_references(const Manifest& manifest, int part, const GradeOptions& opt
     }
   }
   return ok;
+}
+
+std::string folder_fingerprint(const std::string& folder) {
+  std::vector<fs::path> files;
+  std::error_code ec;
+  for (const auto& e : fs::recursive_directory_iterator(folder, ec))
+    if (e.is_regular_file(ec)) files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  XXH3_state_t* st = XXH3_createState();
+  XXH3_64bits_reset(st);
+  for (const fs::path& f : files) {
+    // The name, its length and the bytes: moving bytes from one file to the next changes it too.
+    const std::string name = f.lexically_relative(folder).generic_string();
+    std::string bytes;
+    try {
+      bytes = read_text_file(f.string());
+    } catch (const std::exception&) {
+      bytes = "(unreadable)";
+    }
+    const uint64_t sizes[2] = {name.size(), bytes.size()};
+    XXH3_64bits_update(st, sizes, sizeof sizes);
+    XXH3_64bits_update(st, name.data(), name.size());
+    XXH3_64bits_update(st, bytes.data(), bytes.size());
+  }
+  const uint64_t h = XXH3_64bits_digest(st);
+  XXH3_freeState(st);
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+  return hex;
 }
 
 double load_scaled_limit(double seconds, double load_average, int cores) {

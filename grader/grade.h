@@ -17,10 +17,13 @@ struct CheckResult {
   std::string name;       ///< partN.stepK.suite.test or partN.stepK.render.SCENE
   std::string kind;       ///< "test" or "render"
   bool pass = false;
-  bool skipped = false;   ///< not counted (a course scene that is not there, GTEST_SKIP)
-  std::string output;     ///< what a student reads: what failed and what to look at
+  /// Not counted: the check could not run here (a course scene that is not there); `output`
+  /// says why and what to do. Never a verdict on the code, and never in the bundle.
+  bool skipped = false;
+  std::string output;     ///< what a student reads: what failed, with its values, and the rule
   double seconds = 0.0;
   uint64_t seed = 0;      ///< of a render
+  std::string todo;       ///< the "not implemented" lines the student's code printed (a few, short)
 };
 
 /// One step's score: its points shared equally among its counted checks.
@@ -33,6 +36,11 @@ struct StepResult {
   bool passed() const { return score >= max_score && counted() > 0; }
   int counted() const;
   int failed() const;
+  int skipped() const;
+  /// What the skipped checks would have weighed had they run (the step's points are shared among
+  /// the checks that ran, so this much of the step was graded on fewer checks; all of it when
+  /// none ran).
+  double skipped_points() const;
 };
 
 /// One part's grade: whether it built, and its steps in order.
@@ -50,10 +58,15 @@ struct PartResult {
   int open_checks = 0;                  ///< failing checks that ran a failing earlier part
   double open_points = 0.0;             ///< their points: Gradescope gives at most this much more
   std::vector<int> failing_parts_run;   ///< those earlier parts
+  /// Earlier parts its renders run whose record says they fail but whose files changed since they
+  /// were graded: the range above is of the old code until they are graded again.
+  std::vector<int> changed_parts_run;
   double seconds = 0.0;
   double score() const;
   double max_score() const;
   int failing_steps() const;
+  int skipped_checks() const;
+  double skipped_points() const;
 };
 
 /// Where things are and what to do.
@@ -84,16 +97,32 @@ struct GradeOptions {
   /// Empty: the manifest's references of the scenes as they are.
   std::string reference_renderer;
   uint64_t variant_key = 0;
+  /// The bundle ships every scene it grades with: there a check that cannot run is the grader's
+  /// own error (grade_part throws), never a skip.
+  bool skip_is_error = false;
 };
 
 /// Every step of `part`. Never throws for a student's failure: a crash, a hang or garbage is
-/// that check's failure.
+/// that check's failure. Throws when a check could not run and options.skip_is_error.
 PartResult grade_part(const Manifest& manifest, int part, const GradeOptions& options);
 
+/// The student's earlier parts a part's renders run, as last graded (OUT/state.json).
+struct EarlierParts {
+  std::vector<int> failing;  ///< failed (or did not build) when last graded
+  std::vector<int> unknown;  ///< not graded yet, or changed since they were
+};
+
 /// The line a failing render's message ends with: the state of the earlier steps of its part it
-/// rests on (check.rests_on_steps), from their tests' {failed, counted} by step number.
+/// rests on (check.rests_on_steps), from their tests' {failed, counted} by step number, and of
+/// the earlier parts it runs. It says "look first at this step's code" only when none of them is
+/// known to fail.
 std::string render_rests_on_line(const PartSpec& spec, const RenderCheck& check,
-                                 const std::vector<std::pair<int, int>>& tests_failed_of);
+                                 const std::vector<std::pair<int, int>>& tests_failed_of,
+                                 const EarlierParts& parts = {});
+
+/// The state of the student's earlier parts that part `part`'s renders run (none when
+/// options.isolated: the complete solution stands in for them).
+EarlierParts earlier_parts(const Manifest& manifest, int part, const GradeOptions& options);
 
 /// Renders one check as the grader does and compares it with its reference.
 CheckResult grade_render(const Manifest& manifest, const RenderCheck& check,
@@ -119,7 +148,12 @@ std::string rests_on_line(const Manifest& manifest, int part, const GradeOptions
 void compare_with_gradescope(const Manifest& manifest, PartResult& result,
                              const GradeOptions& options);
 
-/// Records `result` in OUT/state.json for the next rests_on_line.
+/// A fingerprint of the content of every file under `folder` (names and bytes, XXH3, in hex):
+/// how state.json tells a part's files from those it was graded on. Content, not modification
+/// times, which are whole seconds on some file systems and come back with an undo.
+std::string folder_fingerprint(const std::string& folder);
+
+/// Records `result` in OUT/state.json for the next rests_on_line, with its files' fingerprint.
 void record_state(const PartResult& result, const GradeOptions& options);
 
 /// Renders the references of `part` (every part when 0) with the complete solution and records

@@ -80,6 +80,19 @@ bool judge_passed(const std::string& json_text, const std::string& gtest) {
   }
 }
 
+/// Whether the judge's JSON report says the one test was skipped.
+bool judge_skipped(const std::string& json_text, const std::string& gtest) {
+  try {
+    nlohmann::json j = nlohmann::json::parse(json_text);
+    for (const auto& suite : j.value("testsuites", nlohmann::json::array()))
+      for (const auto& test : suite.value("testsuite", nlohmann::json::array()))
+        if (suite.value("name", "") + "." + test.value("name", "") == gtest)
+          return test.value("result", "") == "SKIPPED" || test.contains("skipped");
+  } catch (const std::exception&) {
+  }
+  return false;
+}
+
 /// A folder of the grader's own (0700) for one test's record and verdict.
 struct WorkFolder {
   std::string path;
@@ -164,6 +177,14 @@ JudgedOutcome run_one(const JudgedTest& t, const Sandbox& sandbox, double wall_s
                            probe.signal == 0 && !probe.unknown_status;
   o.pass = probe_ended && judge.ok() && judge_passed(verdict, t.gtest);
   if (o.pass) return o;
+  // A test the judge skipped could not run here (its scene is not there): the judge skips
+  // before any call into the part, so the probe, on the same machine, skipped as well.
+  if (judge_skipped(verdict, t.gtest)) {
+    o.skipped = true;
+    o.message = gtest_skip_reason(judge.output);
+    if (o.message.empty()) o.message = "the test could not run here";
+    return o;
+  }
   std::string failure = judge_failure(verdict);
   if (!failure.empty()) {
     o.message = failure;
@@ -185,6 +206,24 @@ JudgedOutcome run_one(const JudgedTest& t, const Sandbox& sandbox, double wall_s
 }
 
 }  // namespace
+
+std::string gtest_skip_reason(const std::string& output) {
+  std::istringstream in(output);
+  std::string reason;
+  bool in_reason = false;
+  for (std::string line; std::getline(in, line);) {
+    if (!in_reason) {
+      // GoogleTest's "file:line: Skipped" line, then the message the test streamed.
+      const size_t at = line.rfind(": Skipped");
+      in_reason = at != std::string::npos && at + 9 == line.size();
+      continue;
+    }
+    if (line.rfind("[  ", 0) == 0) break;  // the next status line
+    reason += (reason.empty() ? "" : "\n") + line;
+  }
+  while (!reason.empty() && (reason.back() == '\n' || reason.back() == ' ')) reason.pop_back();
+  return reason;
+}
 
 bool has_judges(const std::string& build_dir, int part) {
   std::error_code ec;

@@ -33,11 +33,18 @@ std::vector<JudgedTest> list_judged_tests(int part, const std::string& probe_bui
 /// How one judged test went.
 struct JudgedOutcome {
   bool pass = false;
+  /// The judge skipped the test (GTEST_SKIP before any call into the part: a course scene it
+  /// needs is not there); `message` is its reason. Decided by the judge, never by the probe.
+  bool skipped = false;
   bool disk_exceeded = false;  ///< the probe was stopped for the disk (tests beside it share it)
   std::string message;         ///< the judge's failure, then what the probe's ending says
   std::string student_output;  ///< what the probe printed (for its "not implemented" lines)
   double seconds = 0.0;
 };
+
+/// The reason a GoogleTest run printed for its first skipped test (the lines after "Skipped" up
+/// to the next status line), or "" when nothing was skipped.
+std::string gtest_skip_reason(const std::string& output);
 
 /// Runs every test of `tests`, each probe then judge, up to sandbox.jobs at once (each lane a
 /// uid of its own), outcomes in the order of `tests`. A probe stopped for the disk while others

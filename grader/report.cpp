@@ -15,8 +15,20 @@ std::string points(double score, double max) {
 
 }  // namespace
 
+std::string skipped_summary(int checks, double weight) {
+  char buf[400];
+  std::snprintf(buf, sizeof buf,
+                "%d check%s could not run here (the steps' messages say why: most often the "
+                "course's scenes are not at ../shared/scenes/cs184, beside the project). Not "
+                "counted, not failed: %g points ungraded, decided by their steps' checks that ran "
+                "instead. Gradescope runs every check.",
+                checks, checks == 1 ? "" : "s", std::round(weight * 10.0) / 10.0);
+  return buf;
+}
+
 void print_score_table(std::ostream& out, const std::vector<PartResult>& results) {
-  double total = 0.0, max = 0.0, open = 0.0;
+  double total = 0.0, max = 0.0, open = 0.0, skipped_points = 0.0;
+  int skipped = 0;
   bool alone = !results.empty();
   char line[240];
   for (const PartResult& p : results) {
@@ -39,7 +51,7 @@ void print_score_table(std::ostream& out, const std::vector<PartResult>& results
       std::snprintf(line, sizeof line, "  %-34s %9s  %-6s %-14s %5.1fs\n", s.name.c_str(),
                     points(s.score, s.max_score).c_str(), verdict, checks.c_str(), seconds);
       out << line;
-      if ((!s.passed() || s.failed() > 0) && p.built) {
+      if ((!s.passed() || s.failed() > 0 || s.skipped() > 0) && p.built) {
         std::istringstream in(s.message);
         for (std::string l; std::getline(in, l);) out << "      " << l << "\n";
       }
@@ -59,11 +71,18 @@ void print_score_table(std::ostream& out, const std::vector<PartResult>& results
           << " failing check" << (p.open_checks == 1 ? "" : "s") << " here ran your " << parts
           << ", which fails).\n";
     }
+    for (int k : p.changed_parts_run)
+      out << "  Part " << k << " changed since it was last graded, as failing: grade it again "
+          << "(grader --part " << k << ") to know how it stands now.\n";
     open += p.open_points;
+    skipped += p.skipped_checks();
+    skipped_points += p.skipped_points();
     alone = alone && p.graded_alone;
   }
   out << "\nTotal: " << points(total, max) << (all_passed(results) ? "  (every step passes)" : "")
       << "\n";
+  if (skipped > 0)
+    out << skipped_summary(skipped, skipped_points) << "\n";
   if (alone) {
     out << "Graded as Gradescope grades it: each part with the course's own other parts.\n";
   } else if (open > 0.0) {
@@ -116,11 +135,12 @@ nlohmann::json gradescope_results(const std::vector<PartResult>& results, const 
       t["visibility"] = "visible";
       nlohmann::json checks = nlohmann::json::array();
       for (const CheckResult& c : s.checks) {
+        const std::string said = c.todo.empty() ? c.output : c.output + "\n" + c.todo;
         nlohmann::json cj = {{"name", c.name},
                              {"kind", c.kind},
                              {"status", c.skipped ? "skipped" : c.pass ? "passed" : "failed"},
                              {"seconds", c.seconds},
-                             {"output", capped(c.output, kCheckOutputChars)}};
+                             {"output", capped(said, kCheckOutputChars)}};
         if (c.kind == "render") cj["seed"] = c.seed;
         checks.push_back(cj);
       }
@@ -133,13 +153,22 @@ nlohmann::json gradescope_results(const std::vector<PartResult>& results, const 
       total += s.score;
     }
   }
+  int skipped = 0;
+  double skipped_points = 0.0;
+  for (const PartResult& p : results) {
+    skipped += p.skipped_checks();
+    skipped_points += p.skipped_points();
+  }
+  if (skipped > 0) output += skipped_summary(skipped, skipped_points) + "\n";
   j["score"] = total;
   j["execution_time"] = info.seconds;
   j["output"] = capped(output, kRunOutputChars);
   j["extra_data"] = {{"isolated", info.isolated},
                      {"seed_offset", info.seed_offset},
                      {"parts", parts},
-                     {"build", built ? "ok" : "failed"}};
+                     {"build", built ? "ok" : "failed"},
+                     {"skipped_checks", skipped},
+                     {"skipped_points", skipped_points}};
   return j;
 }
 

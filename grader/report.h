@@ -23,6 +23,10 @@ struct RunInfo {
 /// the total.
 void print_score_table(std::ostream& out, const std::vector<PartResult>& results);
 
+/// The line under the total when checks could not run: how many, and what they would have
+/// weighed (graded on their steps' other checks instead).
+std::string skipped_summary(int checks, double weight);
+
 /// Gradescope's autograder results, one test per step (docs/grading.md): {"score",
 /// "execution_time", "output", "tests": [{"name", "number", "score", "max_score", "status",
 /// "output", "visibility", "extra_data": {"checks": [...]}}], "extra_data"}.

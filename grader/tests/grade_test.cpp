@@ -125,6 +125,31 @@ TEST_F(GraderGrade, ARenderThroughThisPartsStubsEarnsNothing) {
   EXPECT_NE(p.steps[0].message.find("parts/f.cpp:1"), std::string::npos) << p.steps[0].message;
 }
 
+// A render of a course scene that is not beside the project is a skip that says what to do, and
+// costs nothing; where the bundle grades (it ships the scenes) it is the grader's own error.
+TEST_F(GraderGrade, AMissingCourseSceneIsASkipLocallyAndAnErrorInTheBundle) {
+  nlohmann::ordered_json m;
+  std::ifstream(options_.manifest_path) >> m;
+  nlohmann::ordered_json course = m["parts"][0]["steps"][0]["renders"][0];
+  course["name"] = "course";
+  course["scene"] = "no_such_dir/absent.dae";
+  course["course_scene"] = true;
+  m["parts"][0]["steps"][0]["renders"].push_back(course);
+  std::ofstream(options_.manifest_path) << m.dump(2);
+  const Manifest manifest = read_manifest(options_.manifest_path);
+  PartResult p = grade_part(manifest, 3, options_);
+  const StepResult& st = p.steps[0];
+  ASSERT_EQ(st.checks.size(), 2u);
+  EXPECT_TRUE(st.checks[1].skipped);
+  EXPECT_TRUE(st.passed()) << st.message;
+  EXPECT_EQ(st.score, 5.0);
+  EXPECT_NE(st.message.find("put the course's scenes at ../shared/scenes/cs184"), std::string::npos)
+      << st.message;
+  EXPECT_DOUBLE_EQ(p.skipped_points(), 2.5);
+  options_.skip_is_error = true;
+  EXPECT_THROW(grade_part(manifest, 3, options_), std::runtime_error);
+}
+
 TEST_F(GraderGrade, ASeedOffsetRendersWithOtherSeeds) {
   Manifest m = read_manifest(options_.manifest_path);
   options_.seed_offset = 40;
@@ -159,6 +184,45 @@ TEST_F(GraderGrade, TheEarlierPartsStateIsOneLine) {
             std::string::npos);
 }
 
+// A part changed since it was graded is told by its files' content, not their times: an edit
+// with its time put back is seen, and an edit undone within the same second is not a change.
+TEST_F(GraderGrade, AChangeIsToldByContentNotByTime) {
+  std::ofstream(options_.manifest_path) << R"({"parts": [
+      {"part": 1, "steps": [{"step": 1, "name": "a", "points": 1}]},
+      {"part": 2, "renders_rest_on": [1], "steps": [{"step": 1, "name": "b", "points": 1}]}]})";
+  const Manifest m = read_manifest(options_.manifest_path);
+  const fs::path file = root_ / "parts" / "1-raygen" / "camera_ray.cpp";
+  fs::create_directories(file.parent_path());
+  std::ofstream(file) << "float f() { return 1.0f; }\n";
+  const fs::file_time_type when = fs::last_write_time(file);
+  PartResult one;
+  one.part = 1;
+  one.steps.push_back(score_step(m.parts[0].steps[0], {CheckResult{"part1.step1.a.x", "test", false, false, "failed", 0.0, 0}}));
+  record_state(one, options_);
+  EXPECT_EQ(rests_on_line(m, 2, options_).find("changed since"), std::string::npos);
+  // Another answer of the same length, written with the time the graded file had.
+  std::ofstream(file) << "float f() { return 2.0f; }\n";
+  fs::last_write_time(file, when);
+  EXPECT_NE(rests_on_line(m, 2, options_).find("changed since"), std::string::npos)
+      << rests_on_line(m, 2, options_);
+  PartResult two;
+  two.part = 2;
+  two.steps.push_back(score_step(m.parts[1].steps[0], {CheckResult{"part2.step1.b.x", "render", false, false, "failed", 0.0, 0}}));
+  compare_with_gradescope(m, two, options_);
+  EXPECT_EQ(two.changed_parts_run, std::vector<int>{1});
+  std::ostringstream table;
+  print_score_table(table, {two});
+  EXPECT_NE(table.str().find("Part 1 changed since it was last graded"), std::string::npos) << table.str();
+  // Undone: the graded content again, whatever the time says.
+  std::ofstream(file) << "float f() { return 1.0f; }\n";
+  fs::last_write_time(file, when + std::chrono::hours(1));
+  EXPECT_EQ(rests_on_line(m, 2, options_).find("changed since"), std::string::npos)
+      << rests_on_line(m, 2, options_);
+  compare_with_gradescope(m, two, options_);
+  EXPECT_TRUE(two.changed_parts_run.empty());
+  EXPECT_NE(folder_fingerprint(file.parent_path().string()), "");
+}
+
 // A render belongs to the latest step it runs; when it fails, its message says how the earlier
 // steps of its part that it rests on stand (docs/grading.md), from their tests in this run.
 TEST(GraderRestsOn, AFailingRenderSaysHowTheStepsItRestsOnStand) {
@@ -181,9 +245,45 @@ TEST(GraderRestsOn, AFailingRenderSaysHowTheStepsItRestsOnStand) {
   const std::string passing = render_rests_on_line(part, render, {{0, 0}, {0, 3}, {0, 3}, {1, 4}});
   EXPECT_NE(passing.find("their checks pass, so look first at this step's code"), std::string::npos)
       << passing;
+  // An earlier part the render runs fails: this step is not the first place to look.
+  EarlierParts parts;
+  parts.failing = {4};
+  const std::string earlier = render_rests_on_line(part, render, {{0, 0}, {0, 3}, {0, 3}, {1, 4}}, parts);
+  EXPECT_EQ(earlier.find("look first at this step's code"), std::string::npos) << earlier;
+  EXPECT_NE(earlier.find("also runs your Part 4, which fails"), std::string::npos) << earlier;
+  parts.failing.clear();
+  parts.unknown = {3, 4};
+  const std::string unknown = render_rests_on_line(part, render, {{0, 0}, {0, 3}, {0, 3}, {1, 4}}, parts);
+  EXPECT_NE(unknown.find("Parts 3 and 4, not graded since"), std::string::npos) << unknown;
   render.rests_on_steps.clear();
   EXPECT_NE(render_rests_on_line(part, render, {}).find("only this step's functions"),
             std::string::npos);
+  parts.failing = {4};
+  EXPECT_EQ(render_rests_on_line(part, render, {}, parts).find("look first"), std::string::npos);
+}
+
+// The earlier parts a part's renders run, from state.json: failing as last graded, or unknown.
+TEST_F(GraderGrade, TheEarlierPartsARenderRunsAreReadFromTheirRecords) {
+  std::ofstream(options_.manifest_path) << R"({"parts": [
+      {"part": 1, "steps": [{"step": 1, "name": "a", "points": 1}]},
+      {"part": 2, "steps": [{"step": 1, "name": "b", "points": 1}]},
+      {"part": 3, "renders_rest_on": [1, 2], "steps": [{"step": 1, "name": "c", "points": 1}]}]})";
+  const Manifest m = read_manifest(options_.manifest_path);
+  EarlierParts none = earlier_parts(m, 3, options_);
+  EXPECT_EQ(none.unknown, (std::vector<int>{1, 2}));
+  PartResult one;
+  one.part = 1;
+  one.steps.push_back(score_step(m.parts[0].steps[0], {CheckResult{"part1.step1.a.x", "test", true, false, "", 0.0, 0}}));
+  PartResult two;
+  two.part = 2;
+  two.steps.push_back(score_step(m.parts[1].steps[0], {CheckResult{"part2.step1.b.x", "test", false, false, "failed", 0.0, 0}}));
+  record_state(one, options_);
+  record_state(two, options_);
+  const EarlierParts parts = earlier_parts(m, 3, options_);
+  EXPECT_EQ(parts.failing, std::vector<int>{2});
+  EXPECT_TRUE(parts.unknown.empty());
+  options_.isolated = true;
+  EXPECT_TRUE(earlier_parts(m, 3, options_).failing.empty());
 }
 
 TEST_F(GraderGrade, AReferenceThatDoesNotMatchItsChecksumIsRefused) {

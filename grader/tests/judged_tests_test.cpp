@@ -130,6 +130,67 @@ TEST(GraderJudgedTests, OneWrongAnswerFailsTheTest) {
   EXPECT_NE(o.message.find("camera_ray_test.cpp"), std::string::npos)
       << "the judge's own failure, with its file and line, is the message: " << o.message;
 }
+
+// Skipping is the judge's word alone: a probe that prints GoogleTest's skip lines is a failure.
+TEST(GraderJudgedTests, APrintedSkipIsNoSkip) {
+  test::TempFolder dir("pt-judged");
+  JudgedOutcome o = run(camera_test(script(dir, "skipper",
+      "echo 'x.cpp:1: Skipped'\necho 'no scene'\n"
+      "echo '[  SKIPPED ] camera_ray.corners_match_the_field_of_view (0 ms)'\nexit 0")), dir);
+  EXPECT_FALSE(o.pass);
+  EXPECT_FALSE(o.skipped) << o.message;
+}
+
+TEST(GraderJudgedTests, TheSkipReasonIsWhatTheTestSaid) {
+  EXPECT_EQ(gtest_skip_reason("[ RUN      ] t.a\n"
+                              "/p/parts/2-bvh/tests/step3_traversal_test.cpp:201: Skipped\n"
+                              "cannot open x.dae: put the course's scenes at ../shared/scenes/cs184\n"
+                              "\n"
+                              "[  SKIPPED ] t.a (0 ms)\n"),
+            "cannot open x.dae: put the course's scenes at ../shared/scenes/cs184");
+  EXPECT_EQ(gtest_skip_reason("[ RUN      ] t.a\n[       OK ] t.a (0 ms)\n"), "");
+}
+
+// A test its judge skips (a course scene it needs is not there) is a skip with the judge's
+// reason, not a failure: the judge's report says so, whatever the probe did.
+TEST(GraderJudgedTests, ATestTheJudgeSkipsIsASkipWithItsReason) {
+  test::TempFolder dir("pt-judged");
+  const std::filesystem::path judge = dir.path() / "judge";
+  std::ofstream(judge)
+      << "#!/bin/sh\n"
+         "for a in \"$@\"; do case \"$a\" in --gtest_output=json:*) out=${a#--gtest_output=json:};; "
+         "esac; done\n"
+         "echo '[ RUN      ] traversal.course_bunny'\n"
+         "echo 'step3_traversal_test.cpp:201: Skipped'\n"
+         "echo \"cannot open bunny.dae: put the course's scenes at ../shared/scenes/cs184\"\n"
+         "echo '[  SKIPPED ] traversal.course_bunny (0 ms)'\n"
+         "printf '%s' '{\"testsuites\": [{\"name\": \"traversal\", \"testsuite\": [{\"name\": "
+         "\"course_bunny\", \"status\": \"RUN\", \"result\": \"SKIPPED\"}]}]}' > \"$out\"\n";
+  std::filesystem::permissions(judge, std::filesystem::perms(0755));
+  JudgedTest t;
+  t.part = 2;
+  t.step = 3;
+  t.gtest = "traversal.course_bunny";
+  t.name = "part2.step3." + t.gtest;
+  t.probe = script(dir, "probe", "exit 0");
+  t.judge = judge.string();
+  Sandbox sandbox;
+  sandbox.scratch_root = (dir.path() / "scratch").string();
+  std::filesystem::create_directories(sandbox.scratch_root);
+  const JudgedOutcome o = run_judged_tests({t}, sandbox, 60.0, (dir.path() / "records").string()).at(0);
+  EXPECT_FALSE(o.pass);
+  EXPECT_TRUE(o.skipped) << o.message;
+  EXPECT_EQ(o.message, "cannot open bunny.dae: put the course's scenes at ../shared/scenes/cs184");
+  // The same judge reporting the test run and failed is a failure, not a skip.
+  std::ofstream(judge, std::ios::app)
+      << "printf '%s' '{\"testsuites\": [{\"name\": \"traversal\", \"testsuite\": [{\"name\": "
+         "\"course_bunny\", \"status\": \"RUN\", \"result\": \"COMPLETED\", \"failures\": "
+         "[{\"failure\": \"x.cpp:1\\\\nExpected equality\"}]}]}]}' > \"$out\"\n";
+  const JudgedOutcome f = run_judged_tests({t}, sandbox, 60.0, (dir.path() / "records").string()).at(0);
+  EXPECT_FALSE(f.pass);
+  EXPECT_FALSE(f.skipped) << f.message;
+  EXPECT_NE(f.message.find("Expected equality"), std::string::npos) << f.message;
+}
 #endif
 
 }  // namespace

@@ -10,8 +10,9 @@ namespace pt::grader {
 namespace {
 
 CheckResult check(const std::string& name, const std::string& kind, bool pass, bool skipped,
-                  const std::string& output) {
+                  const std::string& output, const std::string& todo = "") {
   CheckResult c;
+  c.todo = todo;
   c.name = name;
   c.kind = kind;
   c.pass = pass;
@@ -45,9 +46,100 @@ std::vector<PartResult> sample_results() {
       {check("part3.step4.importance.a", "test", true, false, ""),
        check("part3.step4.importance.b", "test", true, false, ""),
        check("part3.step4.render.cornell_spheres", "render", false, false,
-             "block (3,5) is 12% too dark\n    estimate_direct_importance: not implemented"),
+             "block (3,5) is 12% too dark", "    estimate_direct_importance: not implemented"),
        check("part3.step4.render.cornell_gap", "render", true, false, "")}));
   return {p};
+}
+
+/// What GoogleTest's EXPECT_EQ says, values on indented lines, then what the test added.
+const char* kEqualityFailure =
+    "parts/2-bvh/tests/step2_split_test.cpp:172\n"
+    "Expected equality of these values:\n"
+    "  got.plane\n"
+    "    Which is: 0.375\n"
+    "  want.plane\n"
+    "    Which is: 0.5\n"
+    "trial 3";
+
+// A failing check's message reaches the student whole, values included, in the step's message
+// (the table) and in results.json, its "not implemented" lines apart and once.
+TEST(GraderReport, AFailingCheckShowsWhatItExpectedAndWhatCameBack) {
+  StepSpec st = spec(2, "split", 6);
+  Rule rule;
+  rule.id = "sah_cost";
+  rule.text = "the split of least SAH cost";
+  rule.checks = {"part3.step2.split.a"};
+  st.rules = {rule};
+  PartResult p;
+  p.part = 3;
+  p.steps.push_back(score_step(
+      st, {check("part3.step2.split.a", "test", false, false, kEqualityFailure,
+                 "    parts/2-bvh/bvh_split.cpp:12: part 2 not implemented: best_sah_split"),
+           check("part3.step2.split.b", "test", true, false, "")}));
+  const std::string& message = p.steps[0].message;
+  for (const char* part : {"got.plane", "Which is: 0.375", "want.plane", "Which is: 0.5", "trial 3",
+                           "#sah_cost", "part 2 not implemented: best_sah_split"})
+    EXPECT_NE(message.find(part), std::string::npos) << part << " is not in\n" << message;
+  // The rule comes after the values, not between them.
+  EXPECT_LT(message.find("Which is: 0.5"), message.find("#sah_cost")) << message;
+  EXPECT_EQ(message.find("not implemented"), message.rfind("not implemented")) << message;
+  std::ostringstream table;
+  print_score_table(table, {p});
+  EXPECT_NE(table.str().find("Which is: 0.375"), std::string::npos) << table.str();
+  EXPECT_NE(table.str().find("Which is: 0.5"), std::string::npos) << table.str();
+  const nlohmann::json j = gradescope_results({p}, RunInfo{});
+  const std::string step_output = j["tests"][0]["output"].get<std::string>();
+  const std::string check_output = j["tests"][0]["extra_data"]["checks"][0]["output"].get<std::string>();
+  for (const std::string& out : {step_output, check_output}) {
+    EXPECT_NE(out.find("Which is: 0.375"), std::string::npos) << out;
+    EXPECT_NE(out.find("Which is: 0.5"), std::string::npos) << out;
+    EXPECT_NE(out.find("not implemented: best_sah_split"), std::string::npos) << out;
+  }
+  // Bounded: a message of any length stays within its cap in results.json.
+  PartResult flood = p;
+  flood.steps[0].checks[0].output = std::string(kEqualityFailure) + std::string(100000, 'x');
+  flood.steps[0].message = std::string(100000, 'y');
+  const nlohmann::json capped = gradescope_results({flood}, RunInfo{});
+  EXPECT_LE(capped["tests"][0]["output"].get<std::string>().size(), 2100u);
+  const std::string cut = capped["tests"][0]["extra_data"]["checks"][0]["output"].get<std::string>();
+  EXPECT_LE(cut.size(), 1300u);
+  EXPECT_NE(cut.find("Which is: 0.5"), std::string::npos) << cut;
+}
+
+// A check that cannot run (a course scene that is not there) is a skip: not counted, not a
+// failure; its step says why and what to do, and the total says what it leaves ungraded.
+TEST(GraderReport, ASkippedCheckIsNamedAndCostsNothing) {
+  const std::string why =
+      "skipped, not counted: cannot open ../shared/scenes/cs184/sky/CBbunny.dae: put the "
+      "course's scenes at ../shared/scenes/cs184 (beside the project)";
+  PartResult p;
+  p.part = 2;
+  p.steps.push_back(score_step(spec(3, "traversal", 8),
+                               {check("part2.step3.traversal.a", "test", true, false, ""),
+                                check("part2.step3.traversal.b", "test", true, false, ""),
+                                check("part2.step3.traversal.c", "test", true, false, ""),
+                                check("part2.step3.traversal.course_bunny", "test", false, true, why)}));
+  const StepResult& st = p.steps[0];
+  EXPECT_DOUBLE_EQ(st.score, 8.0);
+  EXPECT_TRUE(st.passed());
+  EXPECT_EQ(st.skipped(), 1);
+  EXPECT_DOUBLE_EQ(st.skipped_points(), 2.0);
+  EXPECT_DOUBLE_EQ(p.skipped_points(), 2.0);
+  EXPECT_NE(st.message.find("1 of 4 checks skipped"), std::string::npos) << st.message;
+  EXPECT_NE(st.message.find("put the course's scenes at ../shared/scenes/cs184"), std::string::npos)
+      << st.message;
+  EXPECT_EQ(st.message.find("fail"), std::string::npos) << st.message;
+  std::ostringstream table;
+  print_score_table(table, {p});
+  EXPECT_NE(table.str().find("Total: 8/8"), std::string::npos) << table.str();
+  EXPECT_NE(table.str().find("put the course's scenes at ../shared/scenes/cs184"), std::string::npos)
+      << table.str();
+  EXPECT_NE(table.str().find("1 check could not run here"), std::string::npos) << table.str();
+  EXPECT_NE(table.str().find("2 points ungraded"), std::string::npos) << table.str();
+  const nlohmann::json j = gradescope_results({p}, RunInfo{});
+  EXPECT_EQ(j["tests"][0]["status"], "passed");
+  EXPECT_EQ(j["extra_data"]["skipped_checks"], 1);
+  EXPECT_NE(j["output"].get<std::string>().find("2 points ungraded"), std::string::npos) << j.dump(1);
 }
 
 TEST(GraderReport, AStepSharesItsPointsAmongItsCountedChecks) {
