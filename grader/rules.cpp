@@ -29,8 +29,12 @@ std::set<std::string> listed_tests(const std::string& build_dir) {
   std::set<std::string> names;
   std::istringstream in(c.output);
   for (std::string line; std::getline(in, line);) {
-    const size_t hash = line.find("Test #"), colon = line.find(": ", hash);
-    if (hash == std::string::npos || colon == std::string::npos) continue;
+    // "  Test  #35: name": ctest pads the number, so the spaces before '#' vary.
+    const size_t test = line.find("Test ");
+    if (test == std::string::npos) continue;
+    const size_t hash = line.find_first_not_of(' ', test + 4);
+    const size_t colon = line.find(": ", hash);
+    if (hash == std::string::npos || line[hash] != '#' || colon == std::string::npos) continue;
     std::string name = line.substr(colon + 2);
     name = name.substr(0, name.find(' '));  // a parameterised test's "  # GetParam() = ..."
     names.insert(name);
