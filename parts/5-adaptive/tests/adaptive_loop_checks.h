@@ -20,6 +20,7 @@
 #include "framework/render/sample_rate.h"
 #include "framework/render/tile_renderer.h"
 #include "framework/stats/block_ttest.h"
+#include "framework/stats/illuminance_stats.h"
 #include "parts/5-adaptive/adaptive_sampling.h"
 #include "parts/5-adaptive/tests/heavy_tailed_pixel.h"
 #include "pipeline/5-adaptive/adaptive_pixel.h"
@@ -36,15 +37,18 @@ inline bool test_rule(const IlluminanceStats& decision, long estimate_count, flo
   return half_width <= (long double)tolerance * (long double)decision.mean;
 }
 
-/// A pixel's samples played back from a stream of grey values.
+/// A pixel's samples played back from a stream of values, grey, or each value times the next
+/// of `colours` in turn.
 struct Stream {
   std::vector<double> values;
+  std::vector<glm::vec3> colours;
   size_t next = 0;
+  glm::vec3 sample(size_t i) const {
+    const glm::vec3 grey(float(values.at(i)));
+    return colours.empty() ? grey : grey * colours[i % colours.size()];
+  }
   PixelSampleFn fn() {
-    return [this]() {
-      float v = float(values.at(next++));
-      return glm::vec3(v);
-    };
+    return [this]() { return sample(next++); };
   }
 };
 
@@ -74,15 +78,30 @@ inline AdaptiveSettings under(StoppingRule rule, AdaptiveSettings settings) {
 struct Split {
   std::vector<long double> decision, estimate;
 };
-inline Split split_stream(StoppingRule rule, const std::vector<double>& xs, size_t n) {
+/// The same of a stream whose samples decide by `decide[i]` (their illuminance) and are
+/// averaged by `count[i]` (one channel).
+inline Split split_stream(StoppingRule rule, const std::vector<double>& decide,
+                          const std::vector<double>& count, size_t n) {
   const bool course = rule == StoppingRule::course;
   Split s;
   for (size_t i = 0; i < n; ++i) {
     const bool decides = course || i % 4 == 3;
-    if (decides) s.decision.push_back(float(xs[i]));
-    if (course || !decides) s.estimate.push_back(float(xs[i]));
+    if (decides) s.decision.push_back(decide[i]);
+    if (course || !decides) s.estimate.push_back(count[i]);
   }
   return s;
+}
+
+/// A grey stream's values as the loop sees them (floats).
+inline std::vector<double> as_floats(const std::vector<double>& xs) {
+  std::vector<double> out;
+  for (double x : xs) out.push_back(float(x));
+  return out;
+}
+
+inline Split split_stream(StoppingRule rule, const std::vector<double>& xs, size_t n) {
+  const std::vector<double> f = as_floats(xs);
+  return split_stream(rule, f, f, n);
 }
 
 inline long double mean_of(const std::vector<long double>& xs) {
@@ -93,9 +112,9 @@ inline long double mean_of(const std::vector<long double>& xs) {
 
 /// The stopping rule computed independently: two-pass variance of the decision samples in long
 /// double, the half-width of the estimate's mean.
-inline bool reference_converged(StoppingRule rule, const std::vector<double>& xs, size_t n,
-                                double tol) {
-  Split s = split_stream(rule, xs, n);
+inline bool reference_converged(StoppingRule rule, const std::vector<double>& decide,
+                                const std::vector<double>& count, size_t n, double tol) {
+  Split s = split_stream(rule, decide, count, n);
   if (s.decision.size() < 2 || s.estimate.empty()) return false;
   long double mean = mean_of(s.decision), ss = 0;
   for (long double x : s.decision) ss += (x - mean) * (x - mean);
@@ -103,41 +122,89 @@ inline bool reference_converged(StoppingRule rule, const std::vector<double>& xs
   return 1.96L * sigma / std::sqrt((long double)s.estimate.size()) <= tol * mean;
 }
 
+inline bool reference_converged(StoppingRule rule, const std::vector<double>& xs, size_t n,
+                                double tol) {
+  const std::vector<double> f = as_floats(xs);
+  return reference_converged(rule, f, f, n, tol);
+}
+
 inline void stops_at_the_first_batch_where_the_rule_holds(StoppingRule rule) {
   // Gaussian samples, mean 1, σ 0.5, tolerance 0.05: the rule is met near
   // n_E* = (1.96·0.5 / 0.05)² ≈ 384 estimate samples, i.e. 512 samples taken under the split
   // rule, 384 under the course's. Whatever the stream, the loop must stop at exactly the first
   // batch boundary where the rule (computed independently) holds, and not before; the estimate
-  // holds exactly the samples the rule counts.
-  const int batch = 32, max_samples = 4096;
+  // holds exactly the samples the rule counts. The batch sizes leave every remainder modulo 4:
+  // the split rule's roles go by the pixel's sample index, counted across batches, which batches
+  // of 32 alone cannot tell from an index that restarts with each batch. The samples are
+  // coloured, three colours of nearly equal illuminance in turn (0.86 to 0.87) whose RGB means
+  // differ (0.63 to 1.13), three so that every fourth sample meets each: decision statistics of
+  // another grey than illuminance() are noisier and stop the loop elsewhere.
+  const int batches[] = {32, 7, 13, 3};
+  const int max_samples = 4096;
   const double tol = 0.05;
   std::vector<int> stops;
   for (int seed = 0; seed < 200; ++seed) {
+    const int batch = batches[seed % 4];
     std::mt19937_64 gen(seed);
     std::normal_distribution<double> normal(1.0, 0.5);
     Stream s;
     for (int i = 0; i < max_samples; ++i) s.values.push_back(normal(gen));
+    s.colours = {glm::vec3(1.6f, 0.7f, 0.3f), glm::vec3(0.3f, 0.9f, 2.2f),
+                 glm::vec3(0.2f, 1.1f, 0.6f)};
+    std::vector<double> decide, red;
+    for (int i = 0; i < max_samples; ++i) {
+      decide.push_back(illuminance(s.sample(size_t(i))));
+      red.push_back(s.sample(size_t(i)).x);
+    }
     size_t expected = max_samples;
     for (size_t n = batch; n <= size_t(max_samples); n += batch)
-      if (reference_converged(rule, s.values, n, tol)) {
+      if (reference_converged(rule, decide, red, n, tol)) {
         expected = n;
         break;
       }
     PixelStats stats;
+    IlluminanceStats asked;  // the decision statistics the loop last asked the rule about
+    const ConvergenceRule watching = [&](const IlluminanceStats& d, long n, float t) {
+      asked = d;
+      return test_rule(d, n, t);
+    };
     int taken =
-        estimate_pixel_adaptive(under(rule, {max_samples, batch, float(tol)}), s.fn(), &stats, test_rule);
-    ASSERT_TRUE(size_t(taken) == expected)
-        << "seed " << seed << ": stopped after " << taken << " samples, where the rule first holds "
-        << "after " << expected
-        << (taken % batch != 0 && taken != max_samples
+        estimate_pixel_adaptive(under(rule, {max_samples, batch, float(tol)}), s.fn(), &stats, watching);
+    // What came back, then what the rule gives on the same stream, then a cause only where the
+    // facts point to one.
+    const long counted = counted_of(rule, taken), deciding = taken - counted;
+    const bool roles_right = stats.count == counted && stats.decision_samples == deciding;
+    // The mean illuminance() of the deciding samples the loop last asked about.
+    const Split own = split_stream(rule, decide, red, size_t(taken));
+    long double want_mean = 0;
+    const bool asked_some = asked.count > 0 && size_t(asked.count) <= own.decision.size();
+    if (asked_some)
+      want_mean = mean_of(std::vector<long double>(own.decision.begin(),
+                                                   own.decision.begin() + asked.count));
+    const bool decision_values_right =
+        !asked_some || std::abs((long double)asked.mean - want_mean) <= 1e-9L * std::abs(want_mean);
+    ASSERT_TRUE(size_t(taken) == expected && roles_right)
+        << "seed " << seed << ", batches of " << batch << ": the loop took " << taken
+        << " samples, " << stats.decision_samples << " of them deciding and " << stats.count
+        << " counted; the rule first holds after " << expected << " samples, and of " << taken
+        << " samples the rule has " << deciding << " decide and " << counted << " count"
+        << (rule == StoppingRule::course
+                ? " (under the course's rule every sample does both)"
+                : " (the split rule: samples 3, 7, 11, ... of the pixel decide, its index counted "
+                  "across batches, and only they)")
+        << "; the rule was last asked about " << asked.count << " decision samples of mean "
+        << asked.mean << ", where the illuminance() of the first " << asked.count
+        << " deciding samples averages " << double(want_mean)
+        << (!roles_right ? ": each sample's role goes by its index in the pixel (sample_decides, "
+                           "sample_counts)"
+            : !decision_values_right
+                ? ": the decision statistics hold another value of each deciding sample than its "
+                  "illuminance()"
+            : taken % batch != 0 && taken != max_samples
                 ? ": not at a batch boundary: is the rule checked after every sample?"
-                : rule == StoppingRule::course
-                ? ": at another batch: under the course's rule every sample goes into both the "
-                  "decision statistics and *estimate"
-                : ": at another batch: does *estimate hold the estimate samples only (a decision "
-                  "sample in it too makes its count, n_E, wrong), and the decision statistics the "
-                  "decision samples only?");
-    Split split = split_stream(rule, s.values, expected);
+                : ": the roles are right, the stop is not: is the rule asked once after each "
+                  "whole batch, with the decision statistics and the estimate's count?");
+    Split split = split_stream(rule, decide, red, expected);
     ASSERT_EQ(size_t(stats.count), split.estimate.size()) << "seed " << seed << count_hint(rule);
     ASSERT_EQ(size_t(stats.decision_samples), size_t(taken) - split.estimate.size()) << "seed " << seed;
     ASSERT_EQ(stats.samples_taken(), taken);
