@@ -148,10 +148,9 @@ std::string student_lines(const std::string& output) {
   return s;
 }
 
-/// A skipped check's message: why it could not run, and that it costs nothing.
-std::string skipped_message(const std::string& why) {
-  return "not counted (the step's points are shared among its checks that ran): " + why;
-}
+/// A skipped check's message: why it could not run, and what to do (the step says it is not
+/// counted).
+std::string skipped_message(const std::string& why) { return "could not run here: " + why; }
 
 /// Part N's step tests, each run as a probe of the student's code and decided by its judge
 /// (grader/judged_tests.h): in the sandbox when the bundle grades, else as the grader's user.
@@ -363,9 +362,11 @@ StepResult score_step(const StepSpec& spec, std::vector<CheckResult> checks) {
         skips += "\n  " + c.name + ": " + c.output;
   }
   const std::string skipped_line =
-      r.skipped() == 0 ? ""
-                       : "\n" + std::to_string(r.skipped()) + " of " +
-                             std::to_string(r.checks.size()) + " checks skipped:" + skips;
+      r.skipped() == 0
+          ? ""
+          : "\n" + std::to_string(r.skipped()) + " of " + std::to_string(r.checks.size()) +
+                " checks skipped, not counted (the step's points are shared among the " +
+                std::to_string(counted) + " that ran):" + skips;
   if (counted == 0) {
     r.message = r.checks.empty() ? "no check of this step ran (none was built or registered)"
                                  : "every check of this step was skipped: nothing to score" +
