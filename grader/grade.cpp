@@ -638,6 +638,10 @@ CheckResult grade_render(const Manifest& manifest, const RenderCheck& check,
   return r;
 }
 
+namespace {
+fs::path part_folder(int part, const GradeOptions& options);
+}  // namespace
+
 PartResult grade_part(const Manifest& manifest, int part, const GradeOptions& options) {
   auto start = std::chrono::steady_clock::now();
   PartResult result;
@@ -650,6 +654,9 @@ PartResult grade_part(const Manifest& manifest, int part, const GradeOptions& op
     return result;
   }
   fs::create_directories(options.out_dir);
+  // The files as they are when grading starts: an edit made while it runs is not what it graded.
+  if (const fs::path folder = part_folder(part, options); !folder.empty())
+    result.files = folder_fingerprint(folder.string());
   result.rests_on = rests_on_line(manifest, part, options);
   // Part 5's rule is the instructor's choice: the student is told which one is graded.
   const std::vector<const RenderCheck*> every_rule = spec->renders_of_every_rule();
@@ -867,10 +874,9 @@ void record_state(const PartResult& result, const GradeOptions& options) {
                                         {"score", result.score()},
                                         {"max_score", result.max_score()},
                                         {"isolated", options.isolated}};
-  // The files graded, by content: an edit and its undo within one second (a clock's step) are
-  // still told apart from what was graded.
-  const fs::path folder = part_folder(result.part, options);
-  if (!folder.empty()) state[std::to_string(result.part)]["files"] = folder_fingerprint(folder.string());
+  // The files graded, by content: an edit made in the same second as this record is seen, and
+  // an edit undone is no change.
+  if (!result.files.empty()) state[std::to_string(result.part)]["files"] = result.files;
   fs::create_directories(options.out_dir);
   std::ofstream(fs::path(options.out_dir) / "state.json") << state.dump(2) << "\n";
 }

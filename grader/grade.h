@@ -62,6 +62,7 @@ struct PartResult {
   /// were graded: the range above is of the old code until they are graded again.
   std::vector<int> changed_parts_run;
   double seconds = 0.0;
+  std::string files;                    ///< folder_fingerprint of the part's files as graded
   double score() const;
   double max_score() const;
   int failing_steps() const;

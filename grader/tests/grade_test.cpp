@@ -197,6 +197,7 @@ TEST_F(GraderGrade, AChangeIsToldByContentNotByTime) {
   const fs::file_time_type when = fs::last_write_time(file);
   PartResult one;
   one.part = 1;
+  one.files = folder_fingerprint(file.parent_path().string());
   one.steps.push_back(score_step(m.parts[0].steps[0], {CheckResult{"part1.step1.a.x", "test", false, false, "failed", 0.0, 0}}));
   record_state(one, options_);
   EXPECT_EQ(rests_on_line(m, 2, options_).find("changed since"), std::string::npos);
