@@ -190,6 +190,38 @@ TEST(importance, a_black_surface_traces_no_shadow_rays) {
       << "f = 0 for every direction (albedo 0): no shadow ray is needed, and none may be traced";
 }
 
+// Nor for a sample whose radiance is zero: over a grey floor (f not 0) a point light shines
+// down and a spot light beside it shines up, away from the floor (its cone is the whole sphere,
+// its falloff cos^1, so every light sample of it reaching the floor carries radiance 0). One
+// shadow ray, the point light's, is all the estimate needs.
+TEST(importance, a_light_sample_of_no_radiance_traces_no_shadow_ray) {
+  Scene s;
+  const uint32_t floor = test::add_material(s, glm::vec3(0.5f));
+  test::add_quad(s, {-2, -2, 0}, {2, -2, 0}, {2, 2, 0}, {-2, 2, 0}, floor);
+  Light down;
+  down.kind = LightKind::point;
+  down.position = glm::vec3(0.0f, 0.0f, 1.0f);
+  down.radiance = glm::vec3(1.0f);
+  Light away;
+  away.kind = LightKind::spot;
+  away.position = glm::vec3(0.4f, 0.0f, 1.0f);
+  away.direction = glm::vec3(0.0f, 0.0f, 1.0f);
+  away.radiance = glm::vec3(1.0f);
+  away.falloff_degrees = 360.0f;
+  away.falloff_exponent = 1.0f;
+  s.lights = {down, away};
+  test::Rig rig(s);
+  Ray r;
+  r.o = glm::vec3(0.1f, 0.2f, 0.5f);
+  r.d = glm::vec3(0.0f, 0.0f, -1.0f);
+  Rng rng(1);
+  EXPECT_GT(test::reflected_at_hit(rig, false, r, rng).x, 0.0f);
+  const long shadow_rays = rig.query.intersect_calls - 1 + rig.query.occluded_calls;
+  EXPECT_EQ(shadow_rays, 1)
+      << "two light samples, one of radiance 0 (the spot light shines away from the floor) while "
+         "f is not (albedo 0.5): one shadow ray is needed, and only one may be traced";
+}
+
 // A closed box of CGL emitters with a diffuse colour beside their radiance: they glow and reflect
 // nothing, so every light sample inside sees exactly their radiance.
 TEST(importance, emitter_panels_reflect_nothing_in_a_closed_box) {
