@@ -131,6 +131,13 @@ SubmissionIntake take_submission(const std::vector<std::string>& files,
 BundleSummary make_gradescope_bundle(const std::string& source_dir, const std::string& out_zip) {
   fs::path src = fs::absolute(source_dir);
   fs::path zip = fs::absolute(out_zip);
+  // The bundle never skips a check: what the tests and renders read beside the project (the
+  // course's scenes, the ray sets) goes in, or no bundle is made.
+  for (const char* shared : {"scenes/cs184", "rays"})
+    if (!fs::is_directory(src.parent_path() / "shared" / shared))
+      throw std::runtime_error((src.parent_path() / "shared" / shared).lexically_normal().string() +
+                               " is not there: the bundle ships the course's scenes and ray sets, "
+                               "so that no graded check skips on Gradescope; put them there first");
   fs::path stage = fs::temp_directory_path() / ("pt-bundle-" + std::to_string(::getpid()));
   fs::remove_all(stage);
   BundleSummary summary;
@@ -164,7 +171,6 @@ BundleSummary make_gradescope_bundle(const std::string& source_dir, const std::s
   // sets, so that no graded test skips on Gradescope for want of them.
   for (const char* shared : {"scenes/cs184", "rays"}) {
     fs::path from_root = src.parent_path() / "shared" / shared;
-    if (!fs::is_directory(from_root)) continue;
     for (const fs::directory_entry& e : fs::recursive_directory_iterator(from_root)) {
       if (!e.is_regular_file()) continue;
       fs::path to = stage / "shared" / shared / fs::relative(e.path(), from_root);

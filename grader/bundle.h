@@ -41,8 +41,9 @@ struct BundleSummary {
 
 /// Writes OUT_ZIP: setup.sh and run_autograder (from grader/bundle/ of the project), the files
 /// git tracks in `source_dir` (but website/) under project/, and what the tests read beside it
-/// (`source_dir`/../shared/scenes/cs184 and ../shared/rays) under shared/ when they are there.
-/// Throws std::runtime_error on a failure.
+/// (`source_dir`/../shared/scenes/cs184 and ../shared/rays) under shared/. Throws
+/// std::runtime_error on a failure, and first when either shared folder is missing (a bundle
+/// without them would skip checks on Gradescope).
 BundleSummary make_gradescope_bundle(const std::string& source_dir, const std::string& out_zip);
 
 }  // namespace pt::grader
