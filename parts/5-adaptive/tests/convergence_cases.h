@@ -78,15 +78,41 @@ inline std::vector<Mistake> mistakes(StoppingRule rule) {
                                   return std::sqrt(v / m);
                                 });
                               }};
+  // Near misses, each a rule a reading of the page could give: the cases below tell every one
+  // from every other, so a hint names one only when its answers are that mistake's alone.
+  const Mistake population_variance{
+      "the variance divided by the count, not by the count - 1? (decision.variance() is the "
+      "sample variance already)",
+      [](const IlluminanceStats& d, long n, float t) {
+        return half_width_rule(d, n, t, [](double v, double m, double nd) {
+          return 1.96 * std::sqrt(v * (nd - 1.0) / nd / m);
+        });
+      }};
+  const Mistake z_90{"1.645 (a 90% interval) in place of 1.96 (95%)?",
+                     [](const IlluminanceStats& d, long n, float t) {
+                       return half_width_rule(d, n, t, [](double v, double m, double) {
+                         return 1.645 * std::sqrt(v / m);
+                       });
+                     }};
+  const Mistake absolute_tolerance{
+      "the half-width compared with the tolerance itself, not with tolerance·μ?",
+      [](const IlluminanceStats& d, long n, float t) {
+        if (d.count < 2 || n < 1) return false;
+        return 1.96 * std::sqrt(d.variance() / double(n)) <= double(t);
+      }};
   // Under the course's rule the two counts are the same number, so either under the root is right.
-  if (rule == StoppingRule::course) return {variance_as_std, decision_in_count, over_n, no_196};
-  return {variance_as_std, decision_in_count, decision_count_under_root, over_n, no_196};
+  if (rule == StoppingRule::course)
+    return {variance_as_std, decision_in_count, over_n, no_196, population_variance, z_90,
+            absolute_tolerance};
+  return {variance_as_std, decision_in_count, decision_count_under_root, over_n, no_196,
+          population_variance, z_90, absolute_tolerance};
 }
 
 /// The cases the split rule hands over: decision samples apart from the estimate's.
 inline std::vector<Case> split_rule_cases() {
   const IlluminanceStats s = stats_of({1.0, 3.0});      // μ = 2, σ² = 2
   const IlluminanceStats w = stats_of({2.0, 4.0, 6.0});  // μ = 4, σ² = 4
+  const IlluminanceStats b = stats_of({9.0, 11.0});      // μ = 10, σ² = 2
   return {
       {s, 2, 0.98f + 1e-6f, true, "μ 2, σ² 2, 2 estimate samples: I = 1.96·√(2/2) = 1.96 ≤ 0.98·2"},
       {s, 2, 0.97f, false, "μ 2, σ² 2, 2 estimate samples: I = 1.96 > 0.97·2"},
@@ -103,6 +129,11 @@ inline std::vector<Case> split_rule_cases() {
       {stats_of({0.25, 0.25}), 6, 0.01f, true, "σ = 0: I = 0 ≤ 0.01·0.25, converged"},
       {s, 0, 1000.0f, false, "no estimate sample: nothing to report, not converged"},
       {stats_of({5.0}), 10, 1.0f, false, "one decision sample says nothing about σ: not converged"},
+      // Between the near misses' half-widths (σ² with n: 0.80; 1.645: 0.82; n_E + 3: 0.90).
+      {w, 16, 0.2025f, false, "μ 4, σ² 4, 16 estimate samples: I = 0.98 > 0.2025·4 = 0.81"},
+      {w, 16, 0.2125f, false, "μ 4, σ² 4, 16 estimate samples: I = 0.98 > 0.2125·4 = 0.85"},
+      // A bright pixel: tolerance·μ is not the tolerance.
+      {b, 8, 0.15f, true, "μ 10, σ² 2, 8 estimate samples: I = 1.96·√(2/8) = 0.98 ≤ 0.15·10"},
   };
 }
 
@@ -112,6 +143,7 @@ inline std::vector<Case> course_rule_cases() {
   const IlluminanceStats s = stats_of({1.0, 3.0});                  // μ 2, σ² 2
   const IlluminanceStats w = stats_of({2.0, 4.0, 6.0});             // μ 4, σ² 4
   const IlluminanceStats e = stats_of({1, 1, 1, 1, 3, 3, 3, 3});    // μ 2, σ² 8/7
+  const IlluminanceStats b = stats_of({9.0, 11.0});                 // μ 10, σ² 2
   return {
       {s, 2, 0.98f + 1e-6f, true, "μ 2, σ² 2, 2 samples: I = 1.96·√(2/2) = 1.96 ≤ 0.98·2"},
       {s, 2, 0.97f, false, "μ 2, σ² 2, 2 samples: I = 1.96 > 0.97·2"},
@@ -125,6 +157,12 @@ inline std::vector<Case> course_rule_cases() {
       {stats_of({0.25, 0.25}), 2, 0.01f, true, "σ = 0: I = 0 ≤ 0.01·0.25, converged"},
       {IlluminanceStats(), 0, 1000.0f, false, "no sample: nothing to report, not converged"},
       {stats_of({5.0}), 1, 1.0f, false, "one sample says nothing about σ: not converged"},
+      // Between the near misses' half-widths (σ² with n: 0.693; 1.645: 0.622; n counted twice:
+      // 0.524).
+      {e, 8, 0.325f, false, "μ 2, σ² 8/7, 8 samples: I = 0.7408 > 0.325·2 = 0.65"},
+      {e, 8, 0.3f, false, "μ 2, σ² 8/7, 8 samples: I = 0.7408 > 0.3·2 = 0.6"},
+      // A bright pixel: tolerance·μ is not the tolerance.
+      {b, 2, 0.3f, true, "μ 10, σ² 2, 2 samples: I = 1.96·√(2/2) = 1.96 ≤ 0.3·10"},
   };
 }
 
