@@ -104,16 +104,18 @@ TEST(importance, several_lights_add_their_light) {
 }
 
 // A shadow ray runs from the point (started by spawn_shadow_ray, which offsets it by the hit's
-// error bound only) to just short of the light: an occluder 1.5 cm above the floor shadows it
-// completely, and a ceiling 1 cm above a point light does not. A fixed epsilon of 0.05 starts
-// the ray above the occluder (light leaks through); a shadow ray ending past the light meets the
-// ceiling (a lit floor goes dark).
+// error bound only) to just short of the light: an occluder 1.5 cm above the floor, and a tile
+// 0.5 mm above it right under the light, shadow it completely, and a ceiling 1 cm above a point
+// light does not. A fixed epsilon (0.05, or even 0.001) starts the ray above the occluder (light
+// leaks through); a shadow ray ending past the light meets the ceiling (a lit floor goes dark).
 TEST(importance, shadow_rays_run_exactly_from_the_point_to_the_light) {
   Scene s;
   const uint32_t white = test::add_material(s, glm::vec3(0.5f));
   test::add_quad(s, {-5, -5, 0}, {5, -5, 0}, {5, 5, 0}, {-5, 5, 0}, white);           // floor
   test::add_quad(s, {-1, -1, 0.015f}, {1, -1, 0.015f}, {1, 1, 0.015f}, {-1, 1, 0.015f}, white);  // slab
   test::add_quad(s, {-5, -5, 1.01f}, {5, -5, 1.01f}, {5, 5, 1.01f}, {-5, 5, 1.01f}, white);  // ceiling
+  test::add_quad(s, {1.8f, -0.2f, 0.0005f}, {2.2f, -0.2f, 0.0005f}, {2.2f, 0.2f, 0.0005f},
+                 {1.8f, 0.2f, 0.0005f}, white);  // a tile right under the light
   Light l;
   l.kind = LightKind::point;
   l.position = glm::vec3(2.0f, 0.0f, 1.0f);
@@ -126,6 +128,12 @@ TEST(importance, shadow_rays_run_exactly_from_the_point_to_the_light) {
   EXPECT_EQ(test::reflected_at_hit(rig, false, under, rng), glm::vec3(0.0f))
       << "a floor point 1.5 cm under an opaque slab got light: light leaking past an occluder (a "
          "shadow ray started with a fixed epsilon, not spawn_shadow_ray)?";
+  Ray under_tile;  // starts between the floor and the tile, looks down at the floor under it
+  under_tile.o = glm::vec3(2.0f, 0.05f, 0.0002f);
+  EXPECT_EQ(test::reflected_at_hit(rig, false, under_tile, rng), glm::vec3(0.0f))
+      << "a floor point 0.5 mm under an opaque tile, the light straight above, got light: light "
+         "leaking past an occluder (a shadow ray started a fixed distance along, not by "
+         "spawn_shadow_ray's error bound)?";
   Ray beside;  // a floor point clear of the slab, lit by the light 1 cm under the ceiling
   beside.o = glm::vec3(2.5f, 0.0f, 0.5f);
   const glm::vec3 L = test::reflected_at_hit(rig, false, beside, rng);
