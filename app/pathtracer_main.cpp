@@ -18,7 +18,7 @@
 #include "framework/image/image.h"
 #include "framework/image/image_module_preload.h"
 #include "framework/render/available_memory.h"
-#include "framework/lights/light_set.h"
+#include "framework/lights/sampled_lights.h"
 #include "framework/render/film.h"
 #include "framework/render/progress.h"
 #include "framework/render/sample_rate.h"
@@ -104,7 +104,7 @@ int run(int argc, char** argv) {
     if (!fallback.empty()) std::cerr << fallback << "\n";
     std::string dark = no_light_warning(settings, scene);
     if (!dark.empty()) std::cerr << "warning: " << dark << "\n";
-    const LightSet lights(scene);  // only for what it says; the render builds its own
+    const SampledLights lights(scene);  // only for what it says; the render builds its own
     for (const std::string& w : lights.warnings())
       std::cerr << "warning: " << command.scene_path << ": " << w << "\n";
   }

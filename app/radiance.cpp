@@ -6,7 +6,7 @@
 #include <string>
 
 #include "framework/geometry/counting_ray_query.h"
-#include "framework/lights/light_set.h"
+#include "framework/lights/sampled_lights.h"
 #include "framework/render/normal_shading.h"
 #include "pipeline/4-global/integrator.h"
 #ifdef PT_HAVE_WIDE_BVH
@@ -81,7 +81,7 @@ TracedRadianceFn make_radiance(const RenderSettings& settings, const Scene& scen
 std::string no_light_warning(const RenderSettings& settings, const Scene& scene) {
   if (settings.shading == ShadingMode::normals || !settings.environment_map.empty()) return "";
   // The integrator shows normals exactly when this set is empty.
-  if (!LightSet(scene, nullptr).empty()) return "";
+  if (!SampledLights(scene, nullptr).lights().empty()) return "";
   return scene.source + ": nothing in the scene emits light (no light that can light it, no "
                         "emissive surface): rendering its shading normals instead of light";
 }

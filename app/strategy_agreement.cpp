@@ -9,7 +9,7 @@
 
 #include "app/accelerator.h"
 #include "app/render_job.h"
-#include "framework/lights/light_set.h"
+#include "framework/lights/sampled_lights.h"
 #include "framework/render/film.h"
 #include "framework/scene/camera_placement.h"
 #include "framework/scene/collada_loader.h"
@@ -64,7 +64,7 @@ std::string AgreementResult::summary() const {
 }
 
 std::string lights_hemisphere_cannot_see(const Scene& scene) {
-  const LightSet lights(scene);
+  const SampledLights lights(scene);
   for (const SampledLight& l : lights.lights())
     if (const char* what = unreachable_light(l))
       return std::string("the scene has ") + what + ", which no ray can reach";
@@ -73,7 +73,7 @@ std::string lights_hemisphere_cannot_see(const Scene& scene) {
 
 AgreementResult compare_strategies(const Scene& scene, const AgreementOptions& options) {
   AgreementResult result;
-  if (LightSet(scene).empty()) {
+  if (SampledLights(scene).lights().empty()) {
     result.skipped = "nothing in the scene emits (it renders its normals)";
     return result;
   }

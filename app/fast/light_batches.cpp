@@ -223,8 +223,8 @@ LightSample LightBatches::copy_of(const LightSample& ls) {
   return out;
 }
 
-LightSample LightBatches::sample_anew(const LightSet& set, int index, const SurfaceHit& hit,
-                                      glm::vec2 u) {
+LightSample LightBatches::sample_anew(const SampledLights& set, int index,
+                                      const SurfaceHit& hit, glm::vec2 u) {
   // The batch before is done: its counts are settled here, off the path of the calls it answered.
   const int answered = before_ + next_;
   answered_ahead_ += std::max(0, next_ - 1);

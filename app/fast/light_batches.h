@@ -10,13 +10,13 @@
 
 #include "framework/geometry/surface_hit.h"
 #include "framework/lights/faster_light_sampling.h"
-#include "framework/lights/light_set.h"
+#include "framework/lights/sampled_lights.h"
 #include "framework/math/ray.h"
 #include "framework/sampling/rng.h"
 
 namespace pt {
 
-/// LightSet::make_sample and make_shadow_ray's answers, bit for bit, for one camera sample. A
+/// SampledLights::make_sample and make_shadow_ray's answers, bit for bit, for one camera sample. A
 /// light sample is one chain of long operations (a square root, divisions waiting on it), and the
 /// shadow ray and its walk wait on it in turn, so samples made one call at a time hardly overlap.
 /// When an estimate asks for a sample of a panel or mesh light, this therefore also makes the ones
@@ -41,7 +41,8 @@ class LightBatches final : public FasterLightSampling {
   explicit LightBatches(const Rng* rng = nullptr, int light_samples = 1)
       : rng_(rng), light_samples_(light_samples), foresee_(rng != nullptr && light_samples > 1) {}
 
-  LightSample sample(const LightSet& set, int index, const SurfaceHit& hit, glm::vec2 u) override {
+  LightSample sample(const SampledLights& set, int index, const SurfaceHit& hit,
+                     glm::vec2 u) override {
     if (next_ < count_ && &set == set_ && index == light_ && same_bits(hit.p, p_) &&
         same_bits(u, u_[next_])) {
       last_ = next_;
@@ -85,14 +86,15 @@ class LightBatches final : public FasterLightSampling {
   /// A call the batch does not answer: a new batch when foreseeing is on and pays, else one sample.
   /// Never inlined into sample(): its frame (eight-lane locals, saved registers) would be paid by
   /// every call the batch answers.
-  [[gnu::noinline]] LightSample sample_anew(const LightSet& set, int index, const SurfaceHit& hit, glm::vec2 u);
+  [[gnu::noinline]] LightSample sample_anew(const SampledLights& set, int index,
+                                            const SurfaceHit& hit, glm::vec2 u);
 
   const Rng* rng_;
   int light_samples_;
   bool foresee_;  ///< a generator to read, several samples a light, no misprediction yet
   // The batch: samples of light_ of set_ from p_ for the numbers u_, the next to answer
   // batch_[next_], the last answered batch_[last_] (-1: the last answer was not the batch's).
-  const LightSet* set_ = nullptr;
+  const SampledLights* set_ = nullptr;
   int light_ = -1;
   glm::vec3 p_{0.0f};
   int count_ = 0, next_ = 0, last_ = -1;

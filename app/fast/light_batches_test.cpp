@@ -78,7 +78,7 @@ std::pair<int, int> run_loop(const LightSet& set, int per_light, Draws draws, in
         if (draws == Draws::an_extra_number_between && j % 3 == 2) rng.next_float();
         const glm::vec2 u = draws == Draws::its_own_generator ? own.next_2d() : rng.next_2d();
         const LightSample got = set.sample(k, at, u);
-        EXPECT_TRUE(same_sample(got, set.make_sample(k, at, u)))
+        EXPECT_TRUE(same_sample(got, set.sampled().make_sample(k, at, u)))
             << "light " << k << ", point " << i << ", sample " << j;
         // Its shadow ray, made in the batch or not, is the one make_shadow_ray makes.
         EXPECT_TRUE(same_ray(spawn_shadow_ray(at, got), make_shadow_ray(at, got)))
@@ -95,8 +95,8 @@ TEST(FastLightBatches, ForeseesAnEstimateThatDrawsOnePairASample) {
   const Scene s = lit_scene();
   const LightSet set(s);
   ASSERT_EQ(set.lights().size(), 2u);
-  ASSERT_TRUE(set.lights()[0].quad);
-  ASSERT_EQ(set.lights()[1].kind, SampledLightKind::mesh);
+  ASSERT_TRUE(set.sampled().lights()[0].quad);
+  ASSERT_EQ(set.sampled().lights()[1].kind, SampledLightKind::mesh);
   // 16 samples a light: two batches of eight; 5: one of five; 12: eight and four.
   for (int per_light : {16, 5, 12}) {
     int rays = 0;
@@ -131,13 +131,13 @@ TEST(FastLightBatches, AnotherPointOrLightWithTheForeseenNumbersIsSampledAnew) {
   const FasterLightSampling::Installed installed(sampler);
   const SurfaceHit a = hit_at({0.1f, 0.2f, 0.0f}), b = hit_at({0.1f, 0.2f, -0.0f});
   const glm::vec2 u0 = rng.next_2d();
-  ASSERT_TRUE(same_sample(set.sample(0, a, u0), set.make_sample(0, a, u0)));
+  ASSERT_TRUE(same_sample(set.sample(0, a, u0), set.sampled().make_sample(0, a, u0)));
   // The numbers the batch was made for, asked from a point that differs only in a zero's sign
   // (the same position to ==, not to the bit), then of the other light: neither is in the batch.
   Rng peek = rng;
   const glm::vec2 u1 = peek.next_2d(), u2 = peek.next_2d();
-  EXPECT_TRUE(same_sample(set.sample(0, b, u1), set.make_sample(0, b, u1)));
-  EXPECT_TRUE(same_sample(set.sample(1, a, u2), set.make_sample(1, a, u2)));
+  EXPECT_TRUE(same_sample(set.sample(0, b, u1), set.sampled().make_sample(0, b, u1)));
+  EXPECT_TRUE(same_sample(set.sample(1, a, u2), set.sampled().make_sample(1, a, u2)));
   EXPECT_EQ(sampler.answered_ahead(), 0);
   EXPECT_GT(sampler.made_in_vain(), 0);
 }
@@ -155,9 +155,9 @@ TEST(FastLightBatches, AnotherSetOrNoGeneratorIsSampledOnItsOwn) {
     const FasterLightSampling::Installed installed(sampler);
     EXPECT_EQ(FasterLightSampling::on_this_thread(), &sampler);
     const glm::vec2 u0 = rng.next_2d();
-    EXPECT_TRUE(same_sample(set.sample(0, at, u0), set.make_sample(0, at, u0)));
+    EXPECT_TRUE(same_sample(set.sample(0, at, u0), set.sampled().make_sample(0, at, u0)));
     const glm::vec2 u1 = rng.next_2d();
-    EXPECT_TRUE(same_sample(other.sample(0, at, u1), other.make_sample(0, at, u1)));
+    EXPECT_TRUE(same_sample(other.sample(0, at, u1), other.sampled().make_sample(0, at, u1)));
     EXPECT_EQ(sampler.answered_ahead(), 0);
   }
   EXPECT_EQ(FasterLightSampling::on_this_thread(), nullptr);
@@ -165,7 +165,7 @@ TEST(FastLightBatches, AnotherSetOrNoGeneratorIsSampledOnItsOwn) {
   const FasterLightSampling::Installed installed(sampler);
   for (int j = 0; j < 20; ++j) {
     const glm::vec2 u = rng.next_2d();
-    EXPECT_TRUE(same_sample(set.sample(0, at, u), set.make_sample(0, at, u)));
+    EXPECT_TRUE(same_sample(set.sample(0, at, u), set.sampled().make_sample(0, at, u)));
   }
   EXPECT_EQ(sampler.answered_ahead(), 0);
   EXPECT_EQ(sampler.made_in_vain(), 0);
@@ -227,12 +227,12 @@ TEST(FastLightBatches, BatchedSamplesAndShadowRaysAreTheDefinitionsBitForBit) {
   };
   const Scene near = turned({0.1, -0.2, 0.9}), far = turned({1234.5, -987.25, 321.125});
   const LightSet course_lights(course), trapezoid_lights(trapezoid), near_lights(near), far_lights(far);
-  ASSERT_TRUE(course_lights.lights().at(0).quad);
-  ASSERT_EQ(course_lights.lights().at(1).kind, SampledLightKind::mesh);
+  ASSERT_TRUE(course_lights.sampled().lights().at(0).quad);
+  ASSERT_EQ(course_lights.sampled().lights().at(1).kind, SampledLightKind::mesh);
   // A panel unlike its light (a trapezoid) is sampled on the light's rectangle: a quad as well.
-  ASSERT_TRUE(trapezoid_lights.lights().at(0).quad);
-  ASSERT_TRUE(near_lights.lights().at(0).quad);
-  ASSERT_TRUE(far_lights.lights().at(0).quad);
+  ASSERT_TRUE(trapezoid_lights.sampled().lights().at(0).quad);
+  ASSERT_TRUE(near_lights.sampled().lights().at(0).quad);
+  ASSERT_TRUE(far_lights.sampled().lights().at(0).quad);
   struct Case { const LightSet* set; int index; };
   const Case cases[] = {{&course_lights, 0}, {&course_lights, 1}, {&trapezoid_lights, 0},
                         {&near_lights, 0}, {&far_lights, 0}};
@@ -249,7 +249,7 @@ TEST(FastLightBatches, BatchedSamplesAndShadowRaysAreTheDefinitionsBitForBit) {
       for (int j = 0; j < n; ++j) {
         const glm::vec2 u = rng.next_2d();
         const LightSample ls = k.set->sample(k.index, at, u);
-        expect_same_sample_bits(ls, k.set->make_sample(k.index, at, u), i);
+        expect_same_sample_bits(ls, k.set->sampled().make_sample(k.index, at, u), i);
         if (testing::Test::HasFatalFailure()) return;
         kept += ls.pdf > 0.0f;
         const Ray want = make_shadow_ray(at, ls);

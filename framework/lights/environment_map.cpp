@@ -1,3 +1,4 @@
+// Not needed for the assignment: the definitions of framework/lights/environment_map.h.
 #include "framework/lights/environment_map.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // An image-based infinite light: a latitude-longitude radiance map, sampled by its power.
 #pragma once
 

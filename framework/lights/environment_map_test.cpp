@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // The environment map samples directions by its pixels' power: chi-square against the density
 // it claims, at significance 0.01, and the density integrates to 1.
 #include "framework/lights/environment_map.h"

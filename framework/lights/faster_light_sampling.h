@@ -1,6 +1,7 @@
-// The one door through which a render may make light samples and shadow rays faster than their
-// definitions (LightSet::make_sample, make_shadow_ray): an interface the framework declares and a
-// render installs on the thread that estimates a camera sample.
+// Not needed for the assignment: the one door through which a render may make light samples and
+// shadow rays faster than their definitions (SampledLights::make_sample, make_shadow_ray): an
+// interface the framework declares and a render installs on the thread that estimates a camera
+// sample.
 #pragma once
 
 #include <glm/vec2.hpp>
@@ -10,7 +11,7 @@ namespace pt {
 struct LightSample;
 struct Ray;
 struct SurfaceHit;
-class LightSet;
+class SampledLights;
 
 /// A faster way to answer LightSet::sample and spawn_shadow_ray. Whatever is installed must give
 /// every call the definition's answer to the bit (its tests hold it to that), so an estimate
@@ -19,7 +20,8 @@ class LightSet;
 class FasterLightSampling {
  public:
   /// set.make_sample(index, hit, u).
-  virtual LightSample sample(const LightSet& set, int index, const SurfaceHit& hit, glm::vec2 u) = 0;
+  virtual LightSample sample(const SampledLights& set, int index, const SurfaceHit& hit,
+                             glm::vec2 u) = 0;
   /// make_shadow_ray(hit, ls).
   virtual Ray shadow_ray(const SurfaceHit& hit, const LightSample& ls) = 0;
 

@@ -25,9 +25,9 @@ glm::vec3 zero_bounce_radiance(const LightingContext& ctx, const Ray& ray, const
 
 /// Step 3 (hemisphere).
 /// Direct light reflected at `sp` towards the viewer, estimated with ctx.light_samples uniform
-/// directions of the hemisphere: what each direction's ray (spawn_ray from the hit) sees emitted,
-/// its zero_bounce_radiance (or the environment, when it escapes), times f·cosθ, divided by the
-/// density 1/2π, averaged over the directions.
+/// directions of the hemisphere: what each direction's ray (spawn_ray from the hit) brings back,
+/// ctx.lights.radiance_along (the lights as light sampling samples them, the environment where it
+/// escapes), times f·cosθ, divided by the density 1/2π, averaged over the directions.
 glm::vec3 estimate_direct_hemisphere(const LightingContext& ctx, const ShadingPoint& sp, Rng& rng);
 
 /// Step 4 (importance).

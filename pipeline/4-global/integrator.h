@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Given code on Part 4: the radiance function a render calls per camera ray, built from the
 // settings and the scene: the normals view, Part 3's direct light (-m 0 or 1), or Part 4's paths.
 #pragma once
@@ -35,13 +36,15 @@ class Integrator {
   glm::vec3 radiance(const Ray& ray, Rng& rng, const RayQuery& query) const;
   bool shows_normals() const { return normals_; }
   const LightSet& lights() const { return *lights_; }
-  const LightingContext& context() const { return *ctx_; }
+  const EstimatorSettings& settings() const { return settings_; }
 
  private:
-  Integrator() = default;
+  Integrator(const Scene& scene, const RayQuery& query) : scene_(scene), query_(query) {}
+  const Scene& scene_;
+  const RayQuery& query_;
+  EstimatorSettings settings_;
   std::unique_ptr<EnvironmentMap> environment_;
   std::unique_ptr<LightSet> lights_;
-  std::unique_ptr<LightingContext> ctx_;
   bool normals_ = false;
   bool direct_only_ = false;  ///< Part 3's estimate is the whole answer (no Part 4 code runs)
 };

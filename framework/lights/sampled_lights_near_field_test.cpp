@@ -1,7 +1,8 @@
+// Not needed for the assignment.
 // A two-sided emissive panel seen from a centimetre away (CBempty's ceiling above its panel): light
 // sampling's estimate of the irradiance there is close to the known answer in every batch of a
 // thousand samples, and no sample's weight is unbounded.
-#include "framework/lights/light_set.h"
+#include "framework/lights/sampled_lights.h"
 
 #include <gtest/gtest.h>
 
@@ -27,13 +28,13 @@ double irradiance_above_centre(double a, double b, double h, double L) {
   return M_PI * L * 4.0 * F;
 }
 
-TEST(FrameworkLightSetNearField, ATwoSidedPanelACentimetreAwayIsEstimatedWellInEveryBatch) {
+TEST(FrameworkSampledLightsNearField, ATwoSidedPanelACentimetreAwayIsEstimatedWellInEveryBatch) {
   Scene s;
   const float L = 10.0f, h = 0.01f;
   const uint32_t glow = test::add_material(s, glm::vec3(0.0f), glm::vec3(L));
   test::add_quad(s, {-0.4f, -0.3f, 0.0f}, {0.4f, -0.3f, 0.0f}, {0.4f, 0.3f, 0.0f}, {-0.4f, 0.3f, 0.0f},
                  glow);
-  const LightSet lights(s);
+  const SampledLights lights(s);
   ASSERT_EQ(lights.lights().size(), 1u);
   ASSERT_EQ(lights.lights()[0].kind, SampledLightKind::mesh);
   test::DoubleQuery query(s);
@@ -49,7 +50,7 @@ TEST(FrameworkLightSetNearField, ATwoSidedPanelACentimetreAwayIsEstimatedWellInE
   for (int batch = 0; batch < batches; ++batch) {
     double sum = 0.0;
     for (int i = 0; i < n; ++i) {
-      const LightSample ls = lights.sample(0, at, rng.next_2d());
+      const LightSample ls = lights.make_sample(0, at, rng.next_2d());
       if (!(ls.pdf > 0.0f)) continue;
       const double cos_p = std::max(0.0f, glm::dot(ls.wi, at.n));
       const double weight = double(ls.L.x) * cos_p / double(ls.pdf);
