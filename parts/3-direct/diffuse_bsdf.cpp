@@ -27,6 +27,7 @@ glm::vec3 DiffuseBsdf::sample_f(const glm::vec3& wo, glm::vec2 u, glm::vec3* wi,
   // END SOLUTION
   // STUDENT: draw *wi with square_to_cosine_hemisphere(u) (sampling/warp.h), set *pdf to its
   // density cosine_hemisphere_pdf(*wi), and return f(wo, *wi).
+  // sample_f returns f itself, not the estimator weight f·cosθ/pdf (the caller forms it).
   PT_STUDENT_TODO("part 3", "DiffuseBsdf::sample_f");
   (void)wo, (void)u;
   *wi = glm::vec3(0.0f, 0.0f, 1.0f);

@@ -8,6 +8,7 @@
 
 namespace pt {
 
+/// Step 1 (diffuse_bsdf).
 /// A Lambertian reflector of albedo ρ (per channel): f = ρ/π above the surface (z > 0), zero
 /// below. Sampled by cosine-weighted directions, whose density is cosθ/π.
 class DiffuseBsdf final : public Bsdf {
