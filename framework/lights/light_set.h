@@ -29,6 +29,7 @@ struct LightSample {
   glm::vec3 wi{0.0f};
   glm::vec3 L{0.0f};
   float pdf = 0.0f;
+  // Where the sample lies, for spawn_shadow_ray: an estimator reads none of these.
   float distance = std::numeric_limits<float>::infinity();  ///< infinite for distant lights
   glm::vec3 p{0.0f};        ///< the point on the light (finite lights)
   glm::vec3 p_error{0.0f};  ///< its floating-point error bound

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "framework/geometry/spawn_ray.h"
 #include "framework/sampling/warp.h"
 #include "framework/student/todo.h"
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "framework/geometry/spawn_ray.h"
 #include "framework/student/todo.h"
 #include "parts/3-direct/direct_lighting.h"
 #include "parts/4-global/mis.h"
