@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // The BSDF of a surface that reflects nothing: the course's emitters (CGL emission materials).
 #pragma once
 

@@ -1,3 +1,4 @@
+// Not needed for the assignment: the definitions of framework/bsdf/microfacet_bsdf.h.
 #include "framework/bsdf/microfacet_bsdf.h"
 
 #include <algorithm>

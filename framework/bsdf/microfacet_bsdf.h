@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // The course's rough conductor: a Beckmann microfacet BRDF with a conductor's Fresnel term.
 #pragma once
 

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // The course's microfacet BRDF: its distribution's normalisation, the conductor Fresnel at a
 // known angle, its samples against the density it claims (chi-square at significance 0.01),
 // sample_f's value and density against f and pdf, and a furnace-style energy bound.

@@ -1,3 +1,4 @@
+// Not needed for the assignment: the definitions of framework/bsdf/specular.h.
 #include "framework/bsdf/specular.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Perfect specular BSDFs: the mirror and the smooth dielectric (glass) with exact Fresnel terms.
 #pragma once
 

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // The specular BSDFs' sampling: glass chooses reflection with the Fresnel probability.
 #include "framework/bsdf/specular.h"
 

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Counts the rays a renderer asks of a RayQuery, so its summary's rays/s covers every ray.
 #pragma once
 

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // CountingRayQuery: every query is forwarded unchanged and counted once, on whichever thread.
 #include "framework/geometry/counting_ray_query.h"
 

@@ -1,3 +1,4 @@
+// Not needed for the assignment: the definitions of framework/geometry/spawn_ray.h.
 #include "framework/geometry/spawn_ray.h"
 
 #include <limits>

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // spawn_ray and spawn_ray_to: their rays leave and stop where the error bounds say.
 #include "framework/geometry/spawn_ray.h"
 

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // A render as an estimator on disk: mean, per-pixel variance and sample count in one EXR.
 #pragma once
 

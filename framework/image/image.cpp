@@ -1,3 +1,4 @@
+// Not needed for the assignment: the definitions of framework/image/image.h.
 #include "framework/image/image.h"
 
 #include <algorithm>

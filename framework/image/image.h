@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Images in memory and on disk: linear float RGB, written as sRGB PNG or linear float EXR.
 #pragma once
 

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // What the image library does for the framework, behind a small interface: the framework's image
 // functions call it, and it lives in a module of its own (image/oiio/) opened on first use, so a
 // command that reads and writes no image never loads the image library's shared objects.

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Opening the image module while a render runs: the image library's shared objects are many and
 // slow to load (most of them are linked to bind every call at load, whatever dlopen asks), and a
 // render that would open it only to write its film waits for all of them after its last ray.

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Opening the image module beside a render: it never reports a failure itself, the image write
 // that follows still does (naming the image), and a preloaded module writes the image.
 #include "framework/image/image_module_preload.h"

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Image files: sRGB PNG and float EXR round trips, extra EXR channels, and clear errors.
 #include "framework/image/image.h"
 

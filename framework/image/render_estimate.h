@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // A render as an estimator: what a film holds, an EXR carries and the graders compare.
 #pragma once
 

@@ -1,3 +1,4 @@
+// Not needed for the assignment: the definitions of framework/plot/convergence_plot.h.
 #include "framework/plot/convergence_plot.h"
 
 #include <nlohmann/json.hpp>

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // The plot of a convergence table: error against time (or samples) for each strategy, on
 // log-log axes, written as a self-contained SVG (bench writes the table, the write-up shows it).
 #pragma once

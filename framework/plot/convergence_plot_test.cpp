@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // The convergence table is read from CSV or JSON and plotted on log-log axes: each strategy is
 // a line whose points sit where their values say, and bad rows are reported at their line.
 #include "framework/plot/convergence_plot.h"

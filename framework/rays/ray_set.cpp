@@ -1,3 +1,4 @@
+// Not needed for the assignment: the definitions of framework/rays/ray_set.h.
 #include "framework/rays/ray_set.h"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Ray sets on disk (PTRAYS01) and their answers (PTHITS01), so two ray tracers can be timed
 // on the very same rays. The format is the shared docs' rays-format.md.
 #pragma once

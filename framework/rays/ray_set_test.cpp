@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Ray set files: what is written reads back bit for bit, and broken files are refused by name.
 #include "framework/rays/ray_set.h"
 #include "framework/testing/test_paths.h"

@@ -1,3 +1,4 @@
+// Not needed for the assignment: the definitions of framework/render/available_memory.h.
 #include "framework/render/available_memory.h"
 
 #include <algorithm>

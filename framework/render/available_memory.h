@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // How much memory this process may still take: what the machine has free, under its own limits.
 #pragma once
 

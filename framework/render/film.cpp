@@ -1,3 +1,4 @@
+// Not needed for the assignment: the definitions of framework/render/film.h.
 #include "framework/render/film.h"
 
 #include <algorithm>

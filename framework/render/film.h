@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // The film a render accumulates into: running statistics per pixel, read out as image or estimate.
 #pragma once
 

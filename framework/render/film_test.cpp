@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // The film's memory: what a pixel costs, what a render of a given size needs at its peak, what
 // the process may still take; and a film written straight from its statistics is the very file
 // the whole-image copies made.

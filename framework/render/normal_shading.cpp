@@ -1,3 +1,4 @@
+// Not needed for the assignment: the definitions of framework/render/normal_shading.h.
 #include "framework/render/normal_shading.h"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // The normals view (--normals), the debug view Parts 1 and 2 are graded on: what a camera ray
 // hits, coloured by its shading normal.
 #pragma once

@@ -1,3 +1,4 @@
+// Not needed for the assignment: the definitions of framework/render/progress.h.
 #include "framework/render/progress.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // A progress bar with an ETA, for renders a person waits for at a terminal.
 #pragma once
 

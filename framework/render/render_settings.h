@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Everything a render is asked to do, as the pathtracer command line states it.
 #pragma once
 

@@ -1,3 +1,4 @@
+// Not needed for the assignment: the definitions of framework/render/sample_rate.h.
 #include "framework/render/sample_rate.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // The sample-rate image of an adaptive render: how many samples each pixel took, as colour.
 #pragma once
 

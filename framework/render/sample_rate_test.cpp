@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // The sample-rate image shows exactly the samples each pixel took.
 #include <gtest/gtest.h>
 

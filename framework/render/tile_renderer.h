@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Renders an image tile by tile on every core, identically whatever the thread count.
 #pragma once
 

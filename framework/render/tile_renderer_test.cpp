@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // The tile renderer: every pixel exactly once, -p cells respected, images independent of threads.
 #include "framework/render/tile_renderer.h"
 

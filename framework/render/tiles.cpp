@@ -1,3 +1,4 @@
+// Not needed for the assignment: the definitions of framework/render/tiles.h.
 #include "framework/render/tiles.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Splitting an image (or a -p cell of it) into the tiles threads render one at a time.
 #pragma once
 

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // What one tile's radiance calls share: counters kept per tile, so the hot loop needs no atomics.
 #pragma once
 

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Chi-square goodness-of-fit of a direction sampler against the density it claims, for tests.
 //
 // The method of Nori, pbrt and Mitsuba: bin many sampled directions on a grid over the sphere,

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // The chi-square harness itself: a test must be able to fail.
 #include "framework/sampling/chi2_test_util.h"
 

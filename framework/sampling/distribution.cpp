@@ -1,3 +1,4 @@
+// Not needed for the assignment: the definitions of framework/sampling/distribution.h.
 #include "framework/sampling/distribution.h"
 
 #include <algorithm>

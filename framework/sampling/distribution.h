@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Piecewise-constant distributions in 1D and 2D: what an image-based light and a mesh light
 // sample by (pixels in proportion to their power, triangles in proportion to their area).
 #pragma once

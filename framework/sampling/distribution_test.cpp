@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Distribution1D's cell pick: the last cell whose CDF is at most u, never an empty one, the same
 // whether it is found by counting (small distributions) or by binary search (larger ones).
 #include "framework/sampling/distribution.h"

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Chi-square goodness-of-fit of the warps against the density each claims, at significance 0.01
 // per test (Nori's level); and each density integrates to 1.
 #include "framework/sampling/warp.h"

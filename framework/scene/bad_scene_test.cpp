@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Broken scene files: each gets a SceneError naming the file, the element and what is wrong;
 // none crashes or hangs, however it is cut.
 #include <filesystem>

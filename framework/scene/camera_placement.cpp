@@ -1,3 +1,4 @@
+// Not needed for the assignment: the definitions of framework/scene/camera_placement.h.
 #include "framework/scene/camera_placement.h"
 
 #include <cmath>

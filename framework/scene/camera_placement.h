@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Where the course's renderer puts the camera: on the scene's centre, looking the file's way.
 #pragma once
 

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // The course's camera placement: centred on the scene, the file's direction and distance kept.
 #include <cmath>
 #include <stdexcept>

@@ -1,3 +1,4 @@
+// Not needed for the assignment: the definitions of framework/scene/camera_settings_file.h.
 #include "framework/scene/camera_settings_file.h"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // The course renderer's camera settings file (its -c FILE): a saved view, read into a Camera.
 #pragma once
 

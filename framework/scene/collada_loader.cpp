@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Reads the course's COLLADA 1.4 dialect into a world-space Scene (see collada_loader.h).
 #include "framework/scene/collada_loader.h"
 

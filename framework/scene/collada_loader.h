@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Reads the course's COLLADA 1.4 dialect (Blender export plus <extra><technique profile="CGL">).
 #pragma once
 

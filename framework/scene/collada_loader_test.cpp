@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // The COLLADA loader on the course's scenes (known counts) and on a hand-made scene whose world
 // positions, normals, materials, lights and camera are worked out by hand.
 #include "framework/scene/collada_loader.h"

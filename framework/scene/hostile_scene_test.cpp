@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Scene files made to hurt the loader: shared sources it must not mix up, counts that lie,
 // instancing that multiplies, floods of warnings, impossible values, huge coordinates, no
 // camera, the course's older dialect. Each must load as the file says or fail with a message

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Light sources as the scene file states them, in world space.
 #pragma once
 

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Surface materials as the scene file states them; the BSDFs that render them live elsewhere.
 #pragma once
 

@@ -1,3 +1,4 @@
+// Not needed for the assignment: the definitions of framework/scene/scene.h.
 #include "framework/scene/scene.h"
 
 namespace pt {

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // The error a scene loader throws: which file, which element, what is wrong.
 #pragma once
 

@@ -1,3 +1,4 @@
+// Not needed for the assignment: the definitions of framework/scene/scene_summary.h.
 #include "framework/scene/scene_summary.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // What a loaded scene holds, in words (pathtracer --info) and as JSON, and which materials fall back.
 #pragma once
 

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // The scene summary (pathtracer --info) and the one-line material fallback warning.
 #include "framework/scene/scene_summary.h"
 

@@ -1,3 +1,4 @@
+// Not needed for the assignment: the definitions of framework/shading/shading_point.h.
 #include "framework/shading/shading_point.h"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // The shading point's choice of BSDF: a material of the course's microfacet kind is rendered by
 // the framework's MicrofacetBsdf with the file's alpha, eta and k, not by the diffuse stand-in.
 #include "framework/shading/shading_point.h"

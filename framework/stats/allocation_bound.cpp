@@ -1,3 +1,4 @@
+// Not needed for the assignment: the definitions of framework/stats/allocation_bound.h.
 #include "framework/stats/allocation_bound.h"
 
 #include <cmath>

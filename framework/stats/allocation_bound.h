@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // How much any per-pixel sample allocation (adaptive sampling) can save over uniform sampling
 // for a given error measure: the ceiling a convergence study holds adaptive sampling against.
 #pragma once

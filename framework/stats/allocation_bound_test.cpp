@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // The allocation bound against cases worked by hand and against allocations tried one by one.
 #include "framework/stats/allocation_bound.h"
 

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // The block t-test: Welch's test per block and channel, Bonferroni over all of them.
 #include "framework/stats/block_ttest.h"
 

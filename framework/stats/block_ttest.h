@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Is a render statistically the same image as a reference? The block t-test of the design.
 #pragma once
 

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // The block t-test on synthetic renders whose truth is known: the same truth with other random
 // numbers passes at the stated rate, a biased one fails, broken input fails.
 #include "framework/stats/block_ttest.h"

@@ -1,3 +1,4 @@
+// Not needed for the assignment: the definitions of framework/stats/distributions.h.
 #include "framework/stats/distributions.h"
 
 #include <boost/math/distributions/chi_squared.hpp>

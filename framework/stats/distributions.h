@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // The tails of the chi-square and Student's t distributions that the statistical tests judge by,
 // compiled once here (with Boost.Math) so that a test including a helper does not parse Boost.
 #pragma once

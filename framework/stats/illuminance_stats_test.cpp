@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // The running statistics of a pixel's illuminances keep the variance of a bright pixel whose
 // samples barely differ.
 #include "framework/stats/illuminance_stats.h"

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // How far a render is from a reference image: relative MSE and RMSE, the figures of a
 // convergence study.
 #pragma once

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Relative MSE and RMSE on images whose errors are known by hand.
 #include "framework/stats/image_error.h"
 

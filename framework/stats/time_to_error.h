@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // When a strategy reaches a given error: log-log interpolation along its measured
 // (seconds, error) points, to compare strategies at equal error rather than equal samples.
 #pragma once

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Time to reach an error, interpolated on log-log axes between measured points.
 #include "framework/stats/time_to_error.h"
 

@@ -1,3 +1,4 @@
+// Not needed for the assignment: the definitions of framework/stats/variance_consistency.h.
 #include "framework/stats/variance_consistency.h"
 
 #include <algorithm>

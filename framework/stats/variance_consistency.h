@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Is a render's own noise plausible for its estimator? The block t-test divides a block's mean
 // difference by the render's stated variance, so a render that overstates its variance (or
 // understates its sample count) makes any bias look like noise. This check compares the

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // A render's variance channels must be plausible against the reference's: the same estimator
 // with other random numbers passes, a render whose variance (or sample count) was inflated to
 // hide a bias fails.

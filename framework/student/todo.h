@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // The stub a student function starts with: say once, by name and place, that it is not written yet.
 #pragma once
 

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // The lighting tests' ray query (test_scenes.h): CGAL's exact ray-triangle predicate, spheres by
 // bisection. Kept apart from the rest of the framework because CGAL is slow to compile.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // The rule every estimator handed an Rng states: rng is its only source of random numbers. Then
 // the same inputs and an Rng in the same state give the same answer, to the bit, and leave the
 // Rng in the same state; the same seed gives the same image, and a tile or one pixel re-rendered

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // What the lighting tests (Parts 3 and 4, the framework's lights) share: a scene with its own ray
 // query, lights and LightingContext, and a radiance estimator sampled many times.
 #pragma once

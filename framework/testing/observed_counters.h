@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Counters a test reads after it calls a graded function (the rig's ray counts, a tree's
 // primitive tests). A test registers them while they live, so that the grader's probe can record
 // how far a call moved them and its judge can move its own as far (grader/judge/record.h).

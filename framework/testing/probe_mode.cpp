@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // The one flag of probe_mode.h, in the object every test program links.
 #include "framework/testing/probe_mode.h"
 

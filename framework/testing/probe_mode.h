@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Whether this test program is a grader's probe (grader/judge/record.h): a run that only gathers
 // what the graded code answers, for a judge in another process to decide on. A probe's own
 // verdicts count for nothing, so a test may skip computing its expectations there (an exact or

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // The message a scene text is refused with, for tests of the loader's errors.
 #pragma once
 

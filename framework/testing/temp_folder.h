@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // A fresh folder in the temp directory for one test, removed when the test ends: the one every
 // test that writes files uses.
 #pragma once

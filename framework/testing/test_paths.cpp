@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // The build tree's paths, given by CMake to this one file (cmake/PtTesting.cmake).
 #include "framework/testing/test_paths.h"
 

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Where a test finds the project's sources, the course's shared scenes and ray sets, and its own
 // build tree. The paths are compiled into one object per build tree (test_paths.cpp), not into
 // every test: a second tree of the same sources (the handout's round trip, the bundle, a mutant's

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Hand-made scenes for the lighting tests, and a ray query of their own that does not depend on
 // Part 1 or 2: lighting is graded on its own, whatever state the student's intersection code is in.
 #pragma once

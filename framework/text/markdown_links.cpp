@@ -1,3 +1,4 @@
+// Not needed for the assignment: the definitions of framework/text/markdown_links.h.
 #include "framework/text/markdown_links.h"
 
 namespace pt {

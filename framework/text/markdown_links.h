@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Markdown link targets, found and rewritten: the handout's README and the handbook's pages both
 // move pages to another folder and must keep every relative link working.
 #pragma once

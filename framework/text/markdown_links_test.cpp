@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Which link targets are relative, and that only links outside code are rewritten.
 #include "framework/text/markdown_links.h"
 

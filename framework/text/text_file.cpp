@@ -1,3 +1,4 @@
+// Not needed for the assignment: the definitions of framework/text/text_file.h.
 #include "framework/text/text_file.h"
 
 #include <fstream>

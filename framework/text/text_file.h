@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Reading a whole file into a string: the one reader every tool and test of the project uses.
 #pragma once
 

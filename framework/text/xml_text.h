@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Text as XML or HTML character data, for the SVG plots and the write-up's pages alike.
 #pragma once
 

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // BVH construction, whatever splits it is given: the tree is well formed (every primitive once,
 // boxes nested, leaves within size), bad options are refused, an empty scene has no tree. These
 // hold with a stub's splits too (the build falls back to halving), so they are not Part 2's.

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // Given code on Part 2: a nearest-hit query through the tree, the student's walk
 // (Bvh::traverse_nearest) followed by the SurfaceHit of its winner.
 #include "parts/2-bvh/bvh.h"

@@ -1,3 +1,4 @@
+// Not needed for the assignment: the definitions of pipeline/3-direct/direct_integrator.h.
 #include "pipeline/3-direct/direct_integrator.h"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // The integrator a render calls: what it chooses for a scene and the settings.
 #include "pipeline/4-global/integrator.h"
 

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // The controls of Part 5's unbiasedness test: two biased stopping rules on the same heavy-tailed
 // pixel, which the same block t-test at the same significance must catch, or it has no power
 // there. They run no student code (a stub must not score on them), so they are not Part 5's.

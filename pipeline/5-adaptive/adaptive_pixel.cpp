@@ -1,3 +1,4 @@
+// Not needed for the assignment: the definitions of pipeline/5-adaptive/adaptive_pixel.h.
 #include "pipeline/5-adaptive/adaptive_pixel.h"
 
 namespace pt {

@@ -1,3 +1,4 @@
+// Not needed for the assignment.
 // The image module: ImageCodec over OpenImageIO. Built as a shared module of its own, the only
 // code linked against OpenImageIO, and opened by the framework when an image is first read or
 // written (see image/image_codec.h).
