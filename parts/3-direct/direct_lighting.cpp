@@ -111,8 +111,9 @@ glm::vec3 one_bounce_radiance(const LightingContext& ctx, const ShadingPoint& sp
                         : estimate_direct_importance(ctx, sp, rng);
   // END SOLUTION
   // STUDENT: zero for a specular BSDF (sp.bsdf->is_delta()); otherwise the hemisphere estimate
-  // if ctx.hemisphere, else the importance one. The surface's own emission is not added here:
-  // it is zero_bounce_radiance's, counted once where it is seen.
+  // if ctx.hemisphere, else the importance one.
+  // The surface's own emission is not added here: it is zero_bounce_radiance's, counted once
+  // where it is seen.
   PT_STUDENT_TODO("part 3", "one_bounce_radiance");
   (void)ctx, (void)sp, (void)rng;
   return glm::vec3(0.0f);
