@@ -266,9 +266,7 @@ void autograde_setup(const std::string& root, const std::string& grader_exe, int
     fs::permissions(L.project / f, fs::perms(0644));
   }
   for (const fs::directory_entry& e : fs::recursive_directory_iterator(L.project)) {
-    std::string ext = e.path().extension().string();
-    if (e.is_regular_file() && (ext == ".cpp" || ext == ".h") &&
-        is_solution_only(read_text_file(e.path())))
+    if (e.is_regular_file() && !e.is_symlink() && is_solution_only(read_text_file(e.path())))
       fs::permissions(e.path(), fs::perms(0600));
   }
   // What grading runs, built now with the stubs in the part folders: the judges (no student

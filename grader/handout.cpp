@@ -30,9 +30,12 @@ bool in_solution_only_folder(const fs::path& root, const std::string& rel) {
 
 bool is_solution_only(const std::string& text) {
   std::istringstream in(text);
-  std::string line;
-  for (int i = 0; i < 5 && std::getline(in, line); ++i)
-    if (line.find("SOLUTION-ONLY FILE") != std::string::npos) return true;
+  for (std::string line; std::getline(in, line);) {
+    // The marker opens a comment (or, in a patch, the line): a line that only mentions it (a
+    // string, a sentence of prose) is no marker.
+    size_t at = line.find_first_not_of(" \t/#*;-");
+    if (at != std::string::npos && line.compare(at, 18, "SOLUTION-ONLY FILE") == 0) return true;
+  }
   return false;
 }
 
@@ -121,7 +124,7 @@ HandoutSummary make_handout(const std::string& source_dir, const std::string& ou
     std::string text = read_text_file(from);
     std::string ext = from.extension().string();
     bool source = ext == ".cpp" || ext == ".h" || ext == ".hpp" || ext == ".cc";
-    if (source && is_solution_only(text)) {
+    if (is_solution_only(text)) {
       ++summary.dropped;
       continue;
     }

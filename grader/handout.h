@@ -13,7 +13,8 @@ struct HandoutSummary {
   int files = 0, dropped = 0, blocks = 0;
 };
 
-/// A file that says "SOLUTION-ONLY FILE" in its first five lines is not handed out.
+/// A file with a line that opens with the marker "SOLUTION-ONLY FILE" (after a comment's
+/// leader: `//`, `#`, ...), on whatever line it stands, is not handed out.
 bool is_solution_only(const std::string& text);
 
 /// Whether `rel` lies in a folder of `root` (at any depth) that holds a file named

@@ -1,7 +1,14 @@
 // The handout's stripping of solution blocks.
 #include "grader/handout.h"
 
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+
 #include <gtest/gtest.h>
+
+#include "framework/testing/test_paths.h"
 
 namespace pt::grader {
 namespace {
@@ -57,7 +64,42 @@ TEST(GraderHandout, UnbalancedMarkersNameFileAndLine) {
 TEST(GraderHandout, SolutionOnlyFilesAreRecognised) {
   EXPECT_TRUE(is_solution_only("// Checks the solution.\n// SOLUTION-ONLY FILE\nint x;\n"));
   EXPECT_FALSE(is_solution_only("// ordinary\nint x;\n"));
-  EXPECT_FALSE(is_solution_only("1\n2\n3\n4\n5\n6\n// SOLUTION-ONLY FILE\n"));
+  // Wherever the marker stands: a sixth line (app/accel/sheared_triangle_test.cpp's once leaked
+  // into the handout), the last line, a CMake or patch file's own comment leader.
+  EXPECT_TRUE(is_solution_only("1\n2\n3\n4\n5\n// SOLUTION-ONLY FILE: the wide BVH\n"));
+  std::string long_file(200, '\n');
+  EXPECT_TRUE(is_solution_only(long_file + "  /// SOLUTION-ONLY FILE\n"));
+  EXPECT_TRUE(is_solution_only("# the build\n# SOLUTION-ONLY FILE: not handed out\n"));
+  EXPECT_TRUE(is_solution_only("SOLUTION-ONLY FILE: mutant 01 of the complete solution\n"));
+  // A line that only mentions the marker is none.
+  EXPECT_FALSE(is_solution_only("/// A file that says \"SOLUTION-ONLY FILE\" is not handed out.\n"));
+  EXPECT_FALSE(is_solution_only("if (line.find(\"SOLUTION-ONLY FILE\") != npos) return true;\n"));
+}
+
+// Every file of the tree that carries the marker on any line is recognised, and the file that
+// once leaked (its marker on line 6) is one of them.
+TEST(GraderHandout, EveryMarkedFileOfTheTreeIsSolutionOnly) {
+  const std::filesystem::path source = test::source_dir();
+  int marked = 0;
+  for (const std::string& rel : tracked_files(source.string())) {
+    std::ifstream in(source / rel, std::ios::binary);
+    std::string text((std::istreambuf_iterator<char>(in)), {});
+    bool marker_line = false;
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);) {
+      size_t at = line.find("SOLUTION-ONLY FILE");
+      if (at != std::string::npos && line.find_first_not_of(" \t/#*;-") == at) marker_line = true;
+    }
+    if (!marker_line) continue;
+    ++marked;
+    EXPECT_TRUE(is_solution_only(text)) << rel;
+  }
+  EXPECT_GT(marked, 20);
+  EXPECT_TRUE(is_solution_only(
+      [&] {
+        std::ifstream in(source / "app/accel/sheared_triangle_test.cpp", std::ios::binary);
+        return std::string((std::istreambuf_iterator<char>(in)), {});
+      }()));
 }
 
 }  // namespace
