@@ -165,7 +165,9 @@ BuildOutcome student_build(int part, const AutogradeLayout& L, const Sandbox& sa
       lchown(it->path().c_str(), uid_t(uid), gid_t(gid));
     }
   };
-  if (sandbox.protects()) give(sandbox.uid, sandbox.gid);
+  const long builder = sandbox.uid_of(scratch);
+  if (sandbox.protects()) give(builder, builder);
+  o.confinement.writable.push_back(L.build.string());
   set_modes(L.build, fs::perms(0755), fs::perms(0644), fs::perms(0755), secret);
   ChildResult c = run_child({"cmake", "--build", L.build.string(), "--target", objects, "-j",
                              std::to_string(std::max(1, jobs))}, o);
@@ -371,6 +373,11 @@ int autograde(const std::string& root, const std::vector<int>& parts,
         }
         all.push_back(r);
       }
+      // Nothing a process of this part left may reach the next part: what could not be removed
+      // makes the grading the grader's error, never a verdict.
+      std::string left = sandbox.leftovers();
+      if (!left.empty())
+        throw std::runtime_error("a process of the student's left what the grader could not remove: " + left);
     }
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -380,11 +387,13 @@ int autograde(const std::string& root, const std::vector<int>& parts,
     results = gradescope_results(all, info);
     std::string protection =
         sandbox.protects()
-            ? "Your code ran as an unprivileged user of its own, with limits."
+            ? "Your code ran as unprivileged users of its own, one per process, with limits, "
+              "and each process left nothing for the next."
             : "UNPROTECTED: the grader did not run as root, so your code ran as the grader's own "
               "user (a developer's run, not an official grade).";
     results["output"] = results["output"].get<std::string>() + "\n" + intake.summary() + "\n" + protection;
     results["extra_data"]["protected"] = sandbox.protects();
+    results["extra_data"]["namespaces"] = sandbox.namespaces;
     results["extra_data"]["taken"] = intake.taken;
     results["extra_data"]["missing"] = intake.missing;
     results["extra_data"]["refused"] = intake.refused;

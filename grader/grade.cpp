@@ -540,7 +540,8 @@ CheckResult grade_render(const Manifest& manifest, const RenderCheck& check,
       fs::path mine = fs::path(scratch) / scene.filename();
       fs::copy_file(scene, mine, fs::copy_options::overwrite_existing);
       if (options.sandbox->protects() &&
-          chown(mine.c_str(), uid_t(options.sandbox->uid), gid_t(options.sandbox->gid)) != 0) {
+          chown(mine.c_str(), uid_t(options.sandbox->uid_of(scratch)),
+                gid_t(options.sandbox->uid_of(scratch))) != 0) {
         r.output = "the grader cannot hand the render its scene";
         options.sandbox->finish(scratch);
         return r;
@@ -561,6 +562,9 @@ CheckResult grade_render(const Manifest& manifest, const RenderCheck& check,
       if (sandbox) sandbox->finish(dir);
     }
   } cleanup{options.sandbox, scratch};
+  if (c.killed_from_outside)
+    throw std::runtime_error(check.name + " was killed by no limit of its own (from outside its "
+                             "sandbox): the grader's error, not a verdict");
   r.seconds = c.seconds;
   r.todo = student_lines(c.output);
   if (!c.ok()) {

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <regex>
 #include <sstream>
+#include <stdexcept>
 #include <thread>
 
 #include <nlohmann/json.hpp>
@@ -141,6 +142,7 @@ JudgedOutcome run_one(const JudgedTest& t, const Sandbox& sandbox, double wall_s
   sandbox.finish(scratch);
   o.student_output = probe.output;
   o.disk_exceeded = probe.disk_exceeded;
+  o.killed_from_outside = probe.killed_from_outside;
   o.seconds = probe.seconds;
   // The record, copied to a file of the grader's own for the judge.
   std::string replay_path = work.path + "/replay";
@@ -289,6 +291,13 @@ std::vector<JudgedOutcome> run_judged_tests(const std::vector<JudgedTest>& tests
     Sandbox alone = sandbox.protects() ? sandbox.lane(0) : sandbox;
     for (size_t i = 0; i < tests.size(); ++i)
       if (results[i].disk_exceeded) results[i] = run_one(tests[i], alone, wall_seconds, work_dir);
+  }
+  for (size_t i = 0; i < tests.size(); ++i) {
+    if (!results[i].killed_from_outside) continue;
+    results[i] = run_one(tests[i], sandbox.lane(0), wall_seconds, work_dir);
+    if (results[i].killed_from_outside)
+      throw std::runtime_error(tests[i].name + " was killed twice by no limit of its own (from "
+                               "outside its sandbox): the grader's error, not a verdict");
   }
   return results;
 }

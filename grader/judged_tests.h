@@ -37,6 +37,7 @@ struct JudgedOutcome {
   /// needs is not there); `message` is its reason. Decided by the judge, never by the probe.
   bool skipped = false;
   bool disk_exceeded = false;  ///< the probe was stopped for the disk (tests beside it share it)
+  bool killed_from_outside = false;  ///< the probe was killed by no limit of its own
   std::string message;         ///< the judge's failure, then what the probe's ending says
   std::string student_output;  ///< what the probe printed (for its "not implemented" lines)
   double seconds = 0.0;
@@ -48,7 +49,8 @@ std::string gtest_skip_reason(const std::string& output);
 
 /// Runs every test of `tests`, each probe then judge, up to sandbox.jobs at once (each lane a
 /// uid of its own), outcomes in the order of `tests`. A probe stopped for the disk while others
-/// ran beside it runs again alone. `work_dir` is the grader's own folder for the records.
+/// ran beside it runs again alone, and so does one killed from outside (by no limit of its own);
+/// killed from outside again, it is the grader's error (std::runtime_error), never a verdict. `work_dir` is the grader's own folder for the records.
 /// `expected_seconds` (empty, or one per test: what each took last time) starts the longest
 /// first, so that no lane is left with a long test at the end while the others wait.
 std::vector<JudgedOutcome> run_judged_tests(const std::vector<JudgedTest>& tests,

@@ -62,13 +62,15 @@ inline std::vector<std::string> merged_environment(const std::vector<std::string
 }
 
 /// Why a child never ran, by the step of starting it that failed (1 chdir, 2 limits, 3 group,
-/// 4 user, 5 exec).
+/// 4 user, 5 exec, 6 namespaces, 7 seccomp filter).
 inline const char* start_step(int step) {
   switch (step) {
     case 1: return "cannot enter the working folder";
     case 2: return "cannot set its limits";
     case 3: return "cannot switch to its group";
     case 4: return "cannot switch to its user (the grader must run as root for that)";
+    case 6: return "cannot give it namespaces and empty shared folders of its own";
+    case 7: return "cannot install its seccomp filter";
     default: return "cannot run";
   }
 }

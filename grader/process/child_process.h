@@ -30,6 +30,21 @@ struct ChildLimits {
   std::vector<std::string> disk_watch;  ///< folders whose file systems are watched
 };
 
+/// What a child may leave for a later one, kept to nothing (Linux keeper only; docs/grading.md).
+struct ChildConfinement {
+  /// New mount, IPC and network namespaces: its SysV and POSIX IPC die with it, it has no
+  /// network, and every folder of `cover` is an empty tmpfs of its own (or, when it holds a
+  /// folder of `writable`, read-only with those folders writable inside).
+  bool namespaces = false;
+  std::vector<std::string> cover;     ///< folders (a file: made read-only) the child must not share
+  std::vector<std::string> writable;  ///< folders that stay writable (its scratch, the build tree)
+  /// A supplementary group to run in (the group the deny ACLs of shared folders name); -1: none.
+  long group = -1;
+  /// No POSIX message queues (RLIMIT_MSGQUEUE 0), and a seccomp filter that refuses SysV IPC and
+  /// sockets: what no mount can take away where namespaces are refused.
+  bool refuse_ipc_and_network = false;
+};
+
 /// How a child is run.
 struct ChildOptions {
   ChildLimits limits;
@@ -43,6 +58,7 @@ struct ChildOptions {
   /// Descriptors of the caller passed on to the child under the same number (a report pipe's
   /// write end); every other descriptor but 0, 1, 2 is closed.
   std::vector<int> keep_fds;
+  ChildConfinement confinement;
 };
 
 /// How a child ended, and what it printed.
@@ -54,6 +70,9 @@ struct ChildResult {
   bool started = true;      ///< false when the program could not be run at all
   bool unknown_status = false;  ///< no wait status could be had: counted as a failure
   int descendants_killed = 0;   ///< processes it left behind that were ended with it
+  /// Ended by a SIGKILL that no limit of its own sent (the Linux keeper only): the grader must
+  /// run it again or call the run its own error, never score it.
+  bool killed_from_outside = false;
   double seconds = 0.0;
   std::string output;       ///< stdout, and stderr too with ChildStreams::merged
   std::string errors;       ///< stderr with ChildStreams::separate; why, when it did not start

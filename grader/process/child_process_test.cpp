@@ -144,6 +144,26 @@ TEST(FrameworkChildProcess, CpuTimeIsLimited) {
   EXPECT_LT(r.seconds, 15.0);
 }
 
+// A SIGKILL that no limit sent (here the child's own; another grader's or the OOM killer's look
+// the same) is told apart from the limits' ends: a grader reruns such a check, never scores it.
+TEST(FrameworkChildProcess, AKillFromOutsideIsToldApartFromTheLimits) {
+  if (!kLinuxKeeper) GTEST_SKIP() << kNoKeeper;
+  ChildOptions o = limited(30.0);
+  o.limits.cpu_seconds = 20.0;
+  ChildResult outside = run_child({"sh", "-c", "kill -9 $$"}, o);
+  EXPECT_EQ(outside.signal, SIGKILL) << outside.describe();
+  EXPECT_TRUE(outside.killed_from_outside);
+  o.limits.cpu_seconds = 1.0;
+  ChildResult cpu = run_child({"sh", "-c", "trap '' XCPU; while :; do :; done"}, o);
+  EXPECT_FALSE(cpu.ok());
+  EXPECT_FALSE(cpu.killed_from_outside) << cpu.describe();
+  ChildResult wall = run_child({"sleep", "30"}, limited(0.5));
+  EXPECT_TRUE(wall.timed_out);
+  EXPECT_FALSE(wall.killed_from_outside);
+  ChildResult fine = run_child({"true"}, limited(10.0));
+  EXPECT_FALSE(fine.killed_from_outside);
+}
+
 TEST(FrameworkChildProcess, AMemoryBombFailsAtTheAddressSpaceLimit) {
   ChildOptions o = limited(60.0);
   o.limits.address_space = size_t(256) << 20;

@@ -4,13 +4,22 @@
 #include <dirent.h>
 #include <fcntl.h>
 #include <grp.h>
+#include <linux/audit.h>
+#include <linux/filter.h>
+#include <linux/seccomp.h>
+#include <sched.h>
 #include <signal.h>
+#include <stddef.h>
+#include <sys/mount.h>
 #include <sys/prctl.h>
+#include <sys/stat.h>
+#include <sys/syscall.h>
 #include <sys/resource.h>
 #include <sys/statvfs.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
@@ -38,6 +47,7 @@ struct KeeperReport {
   int timed_out = 0;
   int disk_exceeded = 0;
   int descendants_killed = 0;
+  int killed_from_outside = 0;
   double seconds = 0.0;
 };
 
@@ -143,6 +153,88 @@ void close_all_but(std::initializer_list<int> keep, const std::vector<int>& also
   }
 }
 
+/// Whether `inner` is `outer` or lies below it.
+bool within(const std::string& inner, const std::string& outer) {
+  return inner.compare(0, outer.size(), outer) == 0 &&
+         (inner.size() == outer.size() || inner[outer.size()] == '/' || outer == "/");
+}
+
+/// In the child, as root, before it becomes its user: new mount, IPC and network namespaces, and
+/// every shared writable folder made its own and empty (a tmpfs), or read-only where it holds a
+/// folder that must stay writable (a test's scratch under /tmp). Returns false with errno set.
+bool enter_namespaces(const ChildConfinement& c) {
+  if (unshare(CLONE_NEWNS | CLONE_NEWIPC | CLONE_NEWNET) != 0) return false;
+  // Nothing mounted below reaches the caller's namespace.
+  if (mount(nullptr, "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0) return false;
+  std::vector<std::string> cover = c.cover, emptied;
+  std::sort(cover.begin(), cover.end());  // a folder before what lies in it
+  for (const std::string& w : cover) {
+    bool gone = false;
+    for (const std::string& e : emptied) gone = gone || within(w, e);
+    if (gone) continue;
+    struct stat st;
+    if (lstat(w.c_str(), &st) != 0) continue;  // gone since it was found
+    const unsigned long ro = MS_BIND | MS_REMOUNT | MS_RDONLY | MS_NOSUID | MS_NODEV;
+    if (!S_ISDIR(st.st_mode)) {
+      if (mount(w.c_str(), w.c_str(), nullptr, MS_BIND, nullptr) != 0) return false;
+      if (mount(nullptr, w.c_str(), nullptr, ro, nullptr) != 0) return false;
+      continue;
+    }
+    std::vector<std::string> inside;
+    for (const std::string& k : c.writable)
+      if (within(k, w) && k != w) inside.push_back(k);
+    if (inside.empty()) {
+      char options[64];
+      std::snprintf(options, sizeof options, "size=16m,mode=%o", unsigned(st.st_mode & 07777));
+      if (mount("pt-empty", w.c_str(), "tmpfs", MS_NOSUID | MS_NODEV, options) != 0) return false;
+      emptied.push_back(w);
+      continue;
+    }
+    // Each writable folder a mount of its own (which stays writable), then the folder around
+    // them read-only: its own mount only, not theirs.
+    for (const std::string& k : inside)
+      if (mount(k.c_str(), k.c_str(), nullptr, MS_BIND | MS_REC, nullptr) != 0) return false;
+    if (mount(w.c_str(), w.c_str(), nullptr, MS_BIND | MS_REC, nullptr) != 0) return false;
+    if (mount(nullptr, w.c_str(), nullptr, ro, nullptr) != 0) return false;
+  }
+  return true;
+}
+
+/// In the child, as its user, just before exec: a seccomp filter that refuses the system calls
+/// that make something outside the file system another process could open (SysV shared memory,
+/// semaphores and message queues, POSIX message queues, sockets of every family), and every
+/// system call of another ABI (i386's ipc and socketcall, x32). Returns false with errno set.
+bool refuse_ipc_and_network() {
+#if defined(__x86_64__)
+  const unsigned arch = AUDIT_ARCH_X86_64;
+#elif defined(__aarch64__)
+  const unsigned arch = AUDIT_ARCH_AARCH64;
+#else
+  errno = ENOSYS;  // no filter for this machine: refuse to run rather than run unconfined
+  return false;
+#endif
+  const unsigned refused[] = {SYS_shmget, SYS_semget, SYS_msgget, SYS_mq_open, SYS_socket};
+  const unsigned n = sizeof refused / sizeof refused[0];
+  const unsigned deny = SECCOMP_RET_ERRNO | (EACCES & SECCOMP_RET_DATA);
+  std::vector<sock_filter> f;
+  f.push_back(BPF_STMT(BPF_LD | BPF_W | BPF_ABS, offsetof(seccomp_data, arch)));
+  f.push_back(BPF_JUMP(BPF_JMP | BPF_JEQ | BPF_K, arch, 1, 0));
+  f.push_back(BPF_STMT(BPF_RET | BPF_K, SECCOMP_RET_KILL_PROCESS));
+  f.push_back(BPF_STMT(BPF_LD | BPF_W | BPF_ABS, offsetof(seccomp_data, nr)));
+#if defined(__x86_64__)
+  f.push_back(BPF_JUMP(BPF_JMP | BPF_JGE | BPF_K, 0x40000000u, 0, 1));  // x32's numbers
+  f.push_back(BPF_STMT(BPF_RET | BPF_K, SECCOMP_RET_KILL_PROCESS));
+#endif
+  for (unsigned i = 0; i < n; ++i) {
+    f.push_back(BPF_JUMP(BPF_JMP | BPF_JEQ | BPF_K, refused[i], 0, 1));
+    f.push_back(BPF_STMT(BPF_RET | BPF_K, deny));
+  }
+  f.push_back(BPF_STMT(BPF_RET | BPF_K, SECCOMP_RET_ALLOW));
+  sock_fprog prog = {static_cast<unsigned short>(f.size()), f.data()};
+  if (prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) != 0) return false;
+  return syscall(SYS_seccomp, SECCOMP_SET_MODE_FILTER, 0, &prog) == 0;
+}
+
 /// Set when the keeper's parent (the caller) died: the keeper then ends the tree as at a limit.
 volatile sig_atomic_t caller_gone = 0;
 void on_caller_gone(int) { caller_gone = 1; }
@@ -210,14 +302,19 @@ void on_caller_gone(int) { caller_gone = 1; }
     if (lim.file_size > 0) limit(RLIMIT_FSIZE, rlim_t(lim.file_size));
     if (lim.processes > 0) limit(RLIMIT_NPROC, rlim_t(lim.processes));
     limit(RLIMIT_CORE, 0);
+    const ChildConfinement& c = o.confinement;
+    if (c.refuse_ipc_and_network) limit(RLIMIT_MSGQUEUE, 0);
+    if (c.namespaces && !enter_namespaces(c)) fail(6);
     if (o.gid >= 0) {
-      if (setgroups(0, nullptr) != 0) fail(3);
+      gid_t group = gid_t(c.group);
+      if (setgroups(c.group >= 0 ? 1 : 0, &group) != 0) fail(3);
       if (setgid(gid_t(o.gid)) != 0) fail(3);
     }
     if (o.uid >= 0) {
       if (setuid(uid_t(o.uid)) != 0) fail(4);
       if (getuid() != uid_t(o.uid) || geteuid() != uid_t(o.uid)) fail(4);
     }
+    if (c.refuse_ipc_and_network && !refuse_ipc_and_network()) fail(7);
     step = 5;
     execvpe(args[0], args, envp);
     fail(step);
@@ -233,8 +330,8 @@ void on_caller_gone(int) { caller_gone = 1; }
   close(exec_pipe[0]);
   int target_status = 0, target_reaped = 0;
   if (got > 0) {
-    // It never ran the program: say which step failed (1 chdir, 2 limits, 3 group, 4 user,
-    // 5 exec) in the errno's high bits.
+    // It never ran the program: say which step failed (child_detail's start_step) in the
+    // errno's high bits.
     rep.started = 0;
     rep.exec_errno = msg[1] | (msg[0] << 16);
   } else {
@@ -242,10 +339,18 @@ void on_caller_gone(int) { caller_gone = 1; }
     int polls = 0;
     for (;;) {
       int st = 0;
-      pid_t done = waitpid(target, &st, WNOHANG);
+      struct rusage used;
+      pid_t done = wait4(target, &st, WNOHANG, &used);
       if (done == target) {
         target_reaped = 1;
         target_status = st;
+        // SIGKILL that none of the keeper's limits sent: only the CPU limit's hard end sends
+        // it by itself, so under that CPU time it came from elsewhere (another grader, the
+        // machine's OOM killer, an operator, or the program itself).
+        double cpu = double(used.ru_utime.tv_sec + used.ru_stime.tv_sec) +
+                     1e-6 * double(used.ru_utime.tv_usec + used.ru_stime.tv_usec);
+        rep.killed_from_outside = WIFSIGNALED(st) && WTERMSIG(st) == SIGKILL &&
+                                  (lim.cpu_seconds <= 0 || cpu < lim.cpu_seconds + 0.5);
         break;
       }
       if (done < 0 && errno != EINTR) break;  // no status: reported as unknown
@@ -343,6 +448,7 @@ ChildResult run_child(const std::vector<std::string>& argv, const ChildOptions& 
   }
   result.seconds = rep.seconds;
   result.descendants_killed = rep.descendants_killed;
+  result.killed_from_outside = rep.killed_from_outside != 0;
   if (!rep.started) {
     int step = rep.exec_errno >> 16, code = rep.exec_errno & 0xffff;
     std::string why = std::string(start_step(step)) + " " + argv[0] + ": " + std::strerror(code);

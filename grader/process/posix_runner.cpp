@@ -92,9 +92,11 @@ ChildResult run_child(const std::vector<std::string>& argv, const ChildOptions& 
   if (argv.empty()) return not_started("no program to run");
   if (out.fd < 0 || (separate && err.fd < 0))
     return not_started("cannot create a temporary file for the child's output");
-  if (options.uid >= 0 || options.gid >= 0)
+  const ChildConfinement& c = options.confinement;
+  if (options.uid >= 0 || options.gid >= 0 || c.namespaces || c.refuse_ipc_and_network)
     return not_started(std::string("cannot run ") + argv[0] +
-                       " as another user: this build has no sandbox (PT_LINUX_SANDBOX is off)");
+                       " as another user or confined: this build has no sandbox "
+                       "(PT_LINUX_SANDBOX is off)");
   std::vector<char*> args;
   for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
