@@ -30,6 +30,7 @@
 #include "grader/handout.h"
 #include "grader/report.h"
 #include "grader/sandbox.h"
+#include "grader/student_traces.h"
 
 namespace fs = std::filesystem;
 
@@ -174,8 +175,28 @@ class GraderBundle : public ::testing::Test {
     ASSERT_TRUE(bundle_->ok()) << bundle_->log();
   }
   static Bundle* bundle_;
+  /// Part 1's step scores with the sphere's and the triangle's stubs (the cheaters' baseline).
+  static std::map<std::string, double> part1_stubs_;
 };
 Bundle* GraderBundle::bundle_ = nullptr;
+std::map<std::string, double> GraderBundle::part1_stubs_;
+
+/// What leave_behind.cc's processes say they found of an earlier one's: 0 bytes, every time it is
+/// quoted (and it is quoted at least once); where namespaces are refused, nothing could be left
+/// either.
+void expect_nothing_found(const nlohmann::json& r, bool nothing_left) {
+  const std::string all = r.dump();
+  std::regex said("CHEAT found ([0-9]+) bytes left behind, left ([0-9]+) copies");
+  int lines = 0;
+  for (std::sregex_iterator it(all.begin(), all.end(), said), end; it != end; ++it) {
+    ++lines;
+    EXPECT_EQ((*it)[1].str(), "0") << "a later process found what an earlier one left:\n" << outputs(r);
+    if (nothing_left) {
+      EXPECT_EQ((*it)[2].str(), "0") << "a process left a copy:\n" << outputs(r);
+    }
+  }
+  EXPECT_GT(lines, 0) << "no process of the attack was quoted:\n" << outputs(r);
+}
 
 // What the student's code can reach: no SOLUTION-ONLY folder in the zip at all, and a
 // solution-only file that stays (a stress test with a working answer) the grader's alone.
@@ -293,6 +314,7 @@ TEST_F(GraderBundle, CheatersGetNothingForWhatTheyAttack) {
   nlohmann::json stubs = bundle_->grade(files, "1", &seconds, {kCheckCap});
   std::map<std::string, double> baseline = step_scores(stubs);
   ASSERT_FALSE(baseline.empty()) << outputs(stubs);
+  part1_stubs_ = baseline;
   std::printf("part 1, sphere and triangle left as the stubs: %g/%g in %.0f s\n",
               stubs.value("score", -1.0), max_score(stubs), seconds);
   std::map<std::string, double> full;
@@ -304,6 +326,7 @@ TEST_F(GraderBundle, CheatersGetNothingForWhatTheyAttack) {
 
   std::map<std::string, std::vector<std::pair<std::string, std::string>>> by_file;  // file -> (name, text)
   for (const fs::directory_entry& e : fs::directory_iterator(kSource / "grader/tests/cheaters")) {
+    if (!e.is_regular_file()) continue;
     std::string text = read_text_file(e.path());
     by_file[replaced_file(text)].push_back({e.path().stem().string(), text});
   }
@@ -358,6 +381,8 @@ TEST_F(GraderBundle, CheatersGetNothingForWhatTheyAttack) {
         EXPECT_DOUBLE_EQ(steps[step], full[step]) << names << " cost " << step << " its points\n" << outputs(r);
       }
     }
+    for (const auto& [name, text] : group)
+      if (name == "leave_behind") expect_nothing_found(r, false);
     for (const auto& [name, text] : group) {
       if (name != "read_manifest") continue;
       for (const char* what : {"manifest.json: 0 bytes", "part1.normals.cornell_spheres.exr: 0 bytes"}) {
@@ -365,6 +390,72 @@ TEST_F(GraderBundle, CheatersGetNothingForWhatTheyAttack) {
         EXPECT_NE(all.find(std::string("CHEAT read ") + what), std::string::npos) << what << "\n" << outputs(r);
       }
     }
+  }
+}
+
+/// The attack of leave_behind.cc in Part 1's triangle and in Part 2's ray-box file (the rest of
+/// those parts the stubs), for Parts 1 and 2 in one submission.
+Files leave_behind_submission(const Files& solution, const fs::path& stubs) {
+  const std::string cheater = read_text_file(kSource / "grader/tests/cheaters/leave_behind.cc");
+  const std::string prelude = cheater.substr(0, cheater.find("// The stubs of the file it replaces."));
+  Files files;
+  for (const auto& [rel, text] : solution)
+    if (rel.rfind("parts/2-", 0) != 0) files[rel] = text;
+  files.erase(kSphere);
+  files[kTriangle] = cheater;
+  const std::string ray_box = "parts/2-bvh/ray_box.cpp";
+  files[ray_box] = prelude + read_text_file(stubs / ray_box);
+  return files;
+}
+
+/// Each step of Parts 1 and 2 scores no more than the stubs: Part 1's baseline, Part 2's 0.
+void expect_stubs_scores(const nlohmann::json& r, const std::map<std::string, double>& part1) {
+  for (const auto& [step, score] : step_scores(r)) {
+    if (step.rfind("part1.", 0) == 0) {
+      ASSERT_TRUE(part1.count(step)) << step;
+      EXPECT_LE(score, part1.at(step) + 1e-9) << step << "\n" << outputs(r);
+    } else {
+      EXPECT_EQ(score, 0.0) << step << "\n" << outputs(r);
+    }
+  }
+}
+
+// What a process leaves reaches no later one: every process of Parts 1 and 2 (probes, renders,
+// each part's isolated renderer, which holds the other parts' solution) looks for what the ones
+// before it left and leaves a copy of its code; none finds anything, and the score is the stubs',
+// with namespaces and with them refused, in one submission and across two in `grader batch`.
+TEST_F(GraderBundle, WhatAProcessLeavesReachesNoLaterOne) {
+  if (part1_stubs_.empty()) GTEST_SKIP() << "needs the cheaters' baseline (run the whole suite)";
+  const fs::path stubs = bundle_->root() / "pt" / "private" / "stubs";
+  const Files files = leave_behind_submission(bundle_->solution(), stubs);
+  for (const char* mode : {"on", "off"}) {
+    double seconds = 0.0;
+    nlohmann::json r = bundle_->grade(files, "1,2", &seconds,
+                                      {kCheckCap, std::string("PT_SANDBOX_NAMESPACES=") + mode});
+    std::printf("left behind, namespaces %s: %g/%g in %.0f s\n", mode, r.value("score", -1.0),
+                max_score(r), seconds);
+    EXPECT_EQ(r["extra_data"].value("namespaces", std::string("on") == mode), std::string("on") == mode)
+        << outputs(r);
+    expect_stubs_scores(r, part1_stubs_);
+    expect_nothing_found(r, std::string("off") == mode);
+  }
+  // Two submissions side by side, the second graded while and after the first.
+  fs::path dir = bundle_->scratch() / "left-behind";
+  Bundle::write_files(dir / "first", files);
+  Bundle::write_files(dir / "second", files);
+  fs::path out = bundle_->scratch() / "left-behind-results";
+  ChildOptions o;
+  o.limits.wall_seconds = 3600;
+  o.environment = {"PT_SANDBOX_NAMESPACES=off"};
+  ChildResult c = run_child({GRADER_EXE, "batch", dir.string(), "--root", bundle_->root().string(),
+                             "--out", out.string(), "--parts", "1,2", "--jobs", "2",
+                             "--max-check-seconds", "10"}, o);
+  ASSERT_TRUE(c.ok()) << c.describe() << "\n" << c.output;
+  std::printf("left behind, grader batch of 2 (namespaces refused): %.0f s\n", c.seconds);
+  for (const char* name : {"first", "second"}) {
+    nlohmann::json r = nlohmann::json::parse(read_text_file(out / name / "results.json"));
+    expect_stubs_scores(r, part1_stubs_);
+    expect_nothing_found(r, true);
   }
 }
 
@@ -607,6 +698,17 @@ struct Flood {
     for (const nlohmann::json& c : t["extra_data"].value("checks", nlohmann::json::array()))
       EXPECT_LE(c.value("output", "").size(), 1300u) << c.value("name", "");
   }
+}
+
+// Last: after every grading above, no file and no IPC object of any student uid is anywhere on
+// the machine (`/` walked with proc and sys pruned; /proc/sysvipc read).
+TEST_F(GraderBundle, ZzNothingOfAStudentIsLeftOnTheMachine) {
+  const long last = kFirstStudentUid + kSlots * kUidsPerSlot - 1;
+  std::vector<std::string> left = traces_of_uids(kFirstStudentUid, last);
+  std::string listed;
+  for (size_t i = 0; i < left.size() && i < 40; ++i) listed += left[i] + "\n";
+  EXPECT_TRUE(left.empty()) << left.size() << " things of student uids are left:\n" << listed;
+  std::printf("after the whole run: %zu files or IPC objects of student uids on the machine\n", left.size());
 }
 
 }  // namespace
