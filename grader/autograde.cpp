@@ -345,6 +345,8 @@ int autograde(const std::string& root, const std::vector<int>& parts,
     // complete solution's renderer, which the student's user can neither read nor run.
     options.reference_renderer = (secret_of(L) / "pathtracer_solution").string();
     options.variant_key = draw_variant_key();
+    // Of what the student's code prints, only the handout's own stub lines are quoted.
+    if (!tuning.quote_student_lines) options.stub_messages = stub_messages(L.stubs(), files);
     remove_part_programs(L);
     std::vector<PartResult> all;
     for (const PartSpec& spec : manifest.parts) {

@@ -43,6 +43,9 @@ void autograde_setup(const std::string& root, const std::string& grader_exe, int
 /// zero or empty field keeps the standard.
 struct AutogradeTuning {
   double max_check_seconds = 0.0;  ///< caps every test's and render's wall time
+  /// Quote any "not implemented" line of the student's output, not only the handout's stub
+  /// lines: CI's cheater runs, whose attacks say on such a line what they got. Never Gradescope.
+  bool quote_student_lines = false;
   size_t disk_bytes = 0;           ///< the disk a check may fill
   int jobs = 0;                    ///< tests run at once (0: one per core)
   int build_jobs = 2;              ///< the student's build's jobs

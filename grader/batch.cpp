@@ -158,6 +158,7 @@ int grade_batch(const BatchOptions& options) {
       }
       if (options.tuning.max_check_seconds > 0)
         argv.insert(argv.end(), {"--max-check-seconds", std::to_string(options.tuning.max_check_seconds)});
+      if (options.tuning.quote_student_lines) argv.push_back("--quote-student-lines");
       ChildOptions o;
       o.limits.wall_seconds = 6 * 3600.0;  // the run's own limits bound it; this bounds the grader
       o.limits.max_output = 256 << 10;

@@ -19,7 +19,7 @@ struct BatchOptions {
   std::string out_dir;      ///< NAME/results.json and scores.csv; default DIR-results
   int jobs = 0;             ///< submissions graded at once (0: one per core)
   std::vector<int> parts;   ///< only these parts (empty: all)
-  AutogradeTuning tuning;   ///< max_check_seconds is passed on to every run
+  AutogradeTuning tuning;   ///< max_check_seconds and quote_student_lines go to every run
   std::string grader_exe;   ///< the grader to run each submission with
 };
 

@@ -139,10 +139,10 @@ std::string pathtracer_for(int part, const GradeOptions& options) {
 
 /// What of the student's own output a check's message may carry: its "not implemented" lines,
 /// a few and cut short, never more (a message is no channel out of the grader).
-std::string student_lines(const std::string& output) {
+std::string student_lines(const std::string& output, const GradeOptions& options) {
   std::string s;
   int n = 0;
-  std::istringstream in(not_implemented_lines(output));
+  std::istringstream in(not_implemented_lines(output, options.stub_messages));
   for (std::string line; std::getline(in, line) && n < kStudentLinesPerCheck; ++n)
     s += bounded(line, kStudentLineChars) + "\n";
   return s;
@@ -201,7 +201,7 @@ std::vector<CheckResult> run_judged(int part, const PartSpec& spec, const GradeO
           bounded(relative_to(outcomes[i].message, options.source_dir), kCheckMessageChars));
     } else if (!r.pass) {
       r.output = bounded(relative_to(outcomes[i].message, options.source_dir), kCheckMessageChars);
-      r.todo = student_lines(outcomes[i].student_output);
+      r.todo = student_lines(outcomes[i].student_output, options);
     }
     checks.push_back(r);
   }
@@ -254,7 +254,7 @@ std::vector<CheckResult> run_tests(int part, const PartSpec& spec, const GradeOp
           f = "crashed (" + (message.empty() ? std::string("signal") : message) + ")";
       }
       r.output = bounded(relative_to(f, options.source_dir), kCheckMessageChars);
-      r.todo = student_lines(out);
+      r.todo = student_lines(out, options);
     }
     checks.push_back(r);
   }
@@ -409,12 +409,13 @@ StepResult score_step(const StepSpec& spec, std::vector<CheckResult> checks) {
   return r;
 }
 
-std::string not_implemented_lines(const std::string& output) {
+std::string not_implemented_lines(const std::string& output, const std::set<std::string>& only) {
   std::set<std::string> seen;
   std::string s;
   std::istringstream in(output);
   for (std::string line; std::getline(in, line);) {
     if (line.find("not implemented") == std::string::npos) continue;
+    if (!only.empty() && !only.count(line)) continue;
     if (seen.insert(line).second && seen.size() <= 10) s += "    " + line + "\n";
   }
   return s;
@@ -566,10 +567,11 @@ CheckResult grade_render(const Manifest& manifest, const RenderCheck& check,
     throw std::runtime_error(check.name + " was killed by no limit of its own (from outside its "
                              "sandbox): the grader's error, not a verdict");
   r.seconds = c.seconds;
-  r.todo = student_lines(c.output);
+  r.todo = student_lines(c.output, options);
   if (!c.ok()) {
+    // In the sandbox, nothing of its own output but the stubs' lines (r.todo).
     r.output = "the render " + c.describe() + ": " + command_line(argv) +
-               (r.todo.empty() ? "\n" + output_excerpt(c.output, 8) : "");
+               (r.todo.empty() && !options.sandbox ? "\n" + output_excerpt(c.output, 8) : "");
     return r;
   }
   // A stub of this part that ran is not the student's answer. No stub gives a right image (that

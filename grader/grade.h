@@ -3,6 +3,7 @@
 #pragma once
 
 #include <optional>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -101,6 +102,10 @@ struct GradeOptions {
   /// The bundle ships every scene it grades with: there a check that cannot run is the grader's
   /// own error (grade_part throws), never a skip.
   bool skip_is_error = false;
+  /// When not empty (the bundle: stub_messages, grader/handout.h), the only lines of the
+  /// student's output a message may quote: a line equal to one of the handout's own stub
+  /// messages. Nothing else the student's code prints reaches the results.
+  std::set<std::string> stub_messages;
 };
 
 /// Every step of `part`. Never throws for a student's failure: a crash, a hang or garbage is
@@ -162,7 +167,8 @@ void record_state(const PartResult& result, const GradeOptions& options);
 bool make_references(const Manifest& manifest, int part, const GradeOptions& options);
 
 /// The lines of `output` that say something is not implemented yet, each once.
-std::string not_implemented_lines(const std::string& output);
+std::string not_implemented_lines(const std::string& output,
+                                  const std::set<std::string>& only = {});
 
 /// Whether the CMake build tree `build_dir` was configured with a solution apart from its own
 /// sources (PT_SOLUTION_DIR), so that it has separate isolated targets; nothing when its

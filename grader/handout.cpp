@@ -1,11 +1,14 @@
 #include "grader/handout.h"
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <stdexcept>
 
 #include "grader/process/child_process.h"
+#include "framework/student/todo.h"
 #include "framework/text/text_file.h"
 #include "grader/handout_readme.h"
 
@@ -37,6 +40,25 @@ bool is_solution_only(const std::string& text) {
     if (at != std::string::npos && line.compare(at, 18, "SOLUTION-ONLY FILE") == 0) return true;
   }
   return false;
+}
+
+std::set<std::string> stub_messages(const fs::path& root, const std::vector<std::string>& files) {
+  static const std::regex todo(R"re(PT_STUDENT_TODO\(\s*"([^"]*)"\s*,\s*"([^"]*)"\s*\))re");
+  std::set<std::string> messages;
+  for (const std::string& rel : files) {
+    std::istringstream in(read_text_file(root / rel));
+    int number = 0;
+    for (std::string line; std::getline(in, line);) {
+      ++number;
+      std::smatch m;
+      if (!std::regex_search(line, m, todo)) continue;
+      char text[512];
+      std::snprintf(text, sizeof text, PT_STUDENT_TODO_FORMAT, m[1].str().c_str(),
+                    m[2].str().c_str(), rel.c_str(), number);
+      messages.insert(text);
+    }
+  }
+  return messages;
 }
 
 std::string strip_solution(const std::string& text, const std::string& path, int* blocks) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,12 @@ std::string strip_solution(const std::string& text, const std::string& path, int
 /// among a line's comma-separated set-ups) and the comments; the course's own checks' packages
 /// (the grading image's, the developers') are not a student's to install.
 std::string student_package_list(const std::string& text);
+
+/// The lines the stubs of `files` (relative to `root`, e.g. the bundle's private stubs) print
+/// when they run (PT_STUDENT_TODO_FORMAT, framework/student/todo.h): the only lines of a
+/// student's output the bundle's results may quote.
+std::set<std::string> stub_messages(const std::filesystem::path& root,
+                                    const std::vector<std::string>& files);
 
 /// The files git tracks in `source_dir`, relative to it. Throws std::runtime_error when it is
 /// not a git checkout.

@@ -103,7 +103,9 @@ int main(int argc, char** argv) {
   autograde_cmd->add_option("--disk-mb", disk_mb, "the disk a check may fill (default 1024)");
   autograde_cmd->add_option("--jobs", tuning.jobs, "tests run at once, each as a uid of its own (default: one per core)");
   autograde_cmd->add_option("--build-jobs", tuning.build_jobs, "the student's build's jobs")->capture_default_str();
-  autograde_cmd->add_option("--slot", tuning.slot, "the student's uids start at 60000 + SLOT")->capture_default_str();
+  autograde_cmd->add_option("--slot", tuning.slot, "take the first free slot from SLOT on (its uids: 60000 + 64 SLOT ...)")->capture_default_str();
+  autograde_cmd->add_flag("--quote-student-lines", tuning.quote_student_lines,
+                          "quote any \"not implemented\" line, not only the stubs' (a test run reading what an attack got)");
   autograde_cmd->add_option("--submission", tuning.submission, "the submission folder (default ROOT/submission)");
   autograde_cmd->add_option("--results", tuning.results, "the results file (default ROOT/results/results.json)");
   autograde_cmd->add_option("--tree", tuning.tree,
@@ -120,6 +122,8 @@ int main(int argc, char** argv) {
   batch->add_option("--parts", batch_parts, "only these parts, e.g. 1,3");
   batch->add_option("--max-check-seconds", batch_options.tuning.max_check_seconds,
                     "cap every test's and render's time (a test run)");
+  batch->add_flag("--quote-student-lines", batch_options.tuning.quote_student_lines,
+                  "quote any \"not implemented\" line (a test run)");
   CLI11_PARSE(app, argc, argv);
   // Tests and renders run in scratch folders of their own, so a folder named relative to where
   // the grader was started must be made absolute first.

@@ -19,6 +19,10 @@ inline const char* project_relative(const char* file) {
 
 }  // namespace pt::student
 
+/// The line a stub prints (part, name, file, line): the grader quotes a line of the student's
+/// output only when it equals one of the handout's stubs' lines in this form.
+#define PT_STUDENT_TODO_FORMAT "%s not implemented: %s at %s:%d (see the STUDENT comment there)"
+
 /// Put at the top of a stub. Prints "part N not implemented: NAME at FILE:LINE" to stderr the
 /// first time the stub runs (once per stub, not once per pixel), FILE relative to the project,
 /// then the stub returns its neutral value.
@@ -26,6 +30,6 @@ inline const char* project_relative(const char* file) {
   do {                                                                                        \
     static std::atomic<bool> pt_warned_{false};                                               \
     if (!pt_warned_.exchange(true))                                                           \
-      std::fprintf(stderr, "%s not implemented: %s at %s:%d (see the STUDENT comment there)\n", \
+      std::fprintf(stderr, PT_STUDENT_TODO_FORMAT "\n",                                         \
                    part, name, ::pt::student::project_relative(__FILE__), __LINE__);          \
   } while (0)

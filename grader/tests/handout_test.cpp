@@ -4,10 +4,12 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <set>
 #include <sstream>
 
 #include <gtest/gtest.h>
 
+#include "framework/testing/temp_folder.h"
 #include "framework/testing/test_paths.h"
 
 namespace pt::grader {
@@ -100,6 +102,30 @@ TEST(GraderHandout, EveryMarkedFileOfTheTreeIsSolutionOnly) {
         std::ifstream in(source / "app/accel/sheared_triangle_test.cpp", std::ios::binary);
         return std::string((std::istreambuf_iterator<char>(in)), {});
       }()));
+}
+
+// The stub lines the bundle may quote are the handout's stubs' own: the camera function's stub
+// gives one, its file and the line of its PT_STUDENT_TODO, in the form the stub prints
+// (PT_STUDENT_TODO_FORMAT, the one definition both use).
+TEST(GraderHandout, StubMessagesAreWhatTheStubsPrint) {
+  test::TempFolder dir("pt-stub-messages");
+  const std::string rel = "parts/1-raygen/camera_ray.cpp";
+  const std::filesystem::path source = test::source_dir();
+  std::ifstream in(source / rel, std::ios::binary);
+  std::string stub = strip_solution(std::string((std::istreambuf_iterator<char>(in)), {}), rel);
+  std::filesystem::create_directories(dir.path() / "parts/1-raygen");
+  std::ofstream(dir.path() / rel) << stub;
+  std::set<std::string> messages = stub_messages(dir.path(), {rel});
+  ASSERT_EQ(messages.size(), 1u);
+  const std::string& m = *messages.begin();
+  EXPECT_EQ(m.rfind("part 1 not implemented: generate_camera_ray at parts/1-raygen/camera_ray.cpp:", 0), 0u) << m;
+  EXPECT_NE(m.find("(see the STUDENT comment there)"), std::string::npos) << m;
+  // The line number is the stub's own line of PT_STUDENT_TODO.
+  std::istringstream lines(stub);
+  int number = 0, at = 0;
+  for (std::string line; std::getline(lines, line);)
+    if (++number && line.find("PT_STUDENT_TODO(") != std::string::npos) at = number;
+  EXPECT_NE(m.find(":" + std::to_string(at) + " "), std::string::npos) << m;
 }
 
 }  // namespace

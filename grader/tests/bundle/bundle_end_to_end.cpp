@@ -43,6 +43,9 @@ const std::string kTriangle = "parts/1-raygen/triangle_intersect.cpp";
 // The cheater runs' cap on every test and render: an endless loop or a memory bomb costs this
 // per check that calls it, not the part's own minute. Every honest check of Part 1 takes far less.
 const char* kCheckCap = "PT_AUTOGRADER_MAX_CHECK_SECONDS=10";
+// The cheaters' runs quote any "not implemented" line (Gradescope quotes only the handout's own
+// stub lines), so that what an attack got can be read in the results.
+const char* kQuoteAll = "PT_AUTOGRADER_QUOTE_STUDENT_LINES=1";
 
 using Files = std::map<std::string, std::string>;
 
@@ -282,6 +285,9 @@ TEST_F(GraderBundle, HandoutScoresZero) {
   EXPECT_GT(max_score(empty), 0.0);
   EXPECT_DOUBLE_EQ(empty.value("score", -1.0), 0.0) << outputs(empty);
   EXPECT_NE(empty.value("output", "").find("missing: parts/1-raygen/camera_ray.cpp"), std::string::npos);
+  // The stubs' own lines are quoted (they are what stub_messages lists, word for word).
+  EXPECT_NE(empty.dump().find("part 1 not implemented: generate_camera_ray at parts/1-raygen/camera_ray.cpp:"),
+            std::string::npos) << outputs(empty);
   std::printf("handout (empty submission): %g/%g in %.0f s\n", empty.value("score", -1.0),
               max_score(empty), seconds);
 }
@@ -348,7 +354,7 @@ TEST_F(GraderBundle, CheatersGetNothingForWhatTheyAttack) {
     if (i < spheres.size()) groups.back().push_back(spheres[i]);
     if (i < triangles.size()) groups.back().push_back(triangles[i]);
   }
-  const std::vector<std::string> tight = {kCheckCap, "PT_AUTOGRADER_DISK_MB=64"};
+  const std::vector<std::string> tight = {kCheckCap, "PT_AUTOGRADER_DISK_MB=64", kQuoteAll};
   for (const auto& group : groups) {
     // Both files are replaced, by a cheater or else by the honest stub (the file left out), so
     // that the one run of both stubs is every group's baseline.
@@ -431,7 +437,7 @@ TEST_F(GraderBundle, WhatAProcessLeavesReachesNoLaterOne) {
   for (const char* mode : {"on", "off"}) {
     double seconds = 0.0;
     nlohmann::json r = bundle_->grade(files, "1,2", &seconds,
-                                      {kCheckCap, std::string("PT_SANDBOX_NAMESPACES=") + mode});
+                                      {kCheckCap, kQuoteAll, std::string("PT_SANDBOX_NAMESPACES=") + mode});
     std::printf("left behind, namespaces %s: %g/%g in %.0f s\n", mode, r.value("score", -1.0),
                 max_score(r), seconds);
     EXPECT_EQ(r["extra_data"].value("namespaces", std::string("on") == mode), std::string("on") == mode)
@@ -449,7 +455,7 @@ TEST_F(GraderBundle, WhatAProcessLeavesReachesNoLaterOne) {
   o.environment = {"PT_SANDBOX_NAMESPACES=off"};
   ChildResult c = run_child({GRADER_EXE, "batch", dir.string(), "--root", bundle_->root().string(),
                              "--out", out.string(), "--parts", "1,2", "--jobs", "2",
-                             "--max-check-seconds", "10"}, o);
+                             "--max-check-seconds", "10", "--quote-student-lines"}, o);
   ASSERT_TRUE(c.ok()) << c.describe() << "\n" << c.output;
   std::printf("left behind, grader batch of 2 (namespaces refused): %.0f s\n", c.seconds);
   for (const char* name : {"first", "second"}) {
@@ -602,7 +608,7 @@ TEST_F(GraderBundle, AttacksFromEveryPartScoreWhatTheStubsScore) {
   student.finish(scratch);
   std::printf("the student's user opens %d of %zu protected files\n", opened, targets.secrets.size());
   double seconds = 0.0;
-  nlohmann::json r = bundle_->grade(files, "", &seconds, {kCheckCap});
+  nlohmann::json r = bundle_->grade(files, "", &seconds, {kCheckCap, kQuoteAll});
   EXPECT_EQ(validate_gradescope(r), "");
   std::printf("attacks in every part's files: %g/%g in %.0f s\n", r.value("score", -1.0),
               max_score(r), seconds);
@@ -670,7 +676,8 @@ TEST_F(GraderBundle, AnImageRenderedBeforehandPassesNoRender) {
 }
 
 // A submission that prints as much as it can, on "not implemented" lines and others, from every
-// probe and render: results.json stays within its small budget, every message within its cap.
+// probe and render: results.json stays within its small budget, every message within its cap,
+// and none of its lines is quoted (they are not the handout's stub lines).
 TEST_F(GraderBundle, WhatTheCodePrintsCannotCarryTheSolutionOut) {
   const std::string flood = R"(#include <cstdio>
 namespace {
@@ -693,6 +700,13 @@ struct Flood {
   const std::string all = r.dump();
   std::printf("a submission that floods its output: results.json %zu bytes in %.0f s\n", all.size(), seconds);
   EXPECT_LT(all.size(), size_t(64) << 10) << "results.json carries " << all.size() << " bytes";
+  // Its lines are not the handout's stub lines, so none is quoted: 0 bytes of what it printed.
+  std::regex flood_text("not implemented [0-9]+: [0-9a-f]+");
+  size_t carried = 0;
+  for (std::sregex_iterator it(all.begin(), all.end(), flood_text), end; it != end; ++it)
+    carried += size_t((*it).length());
+  std::printf("  of which %zu bytes are the flood's lines\n", carried);
+  EXPECT_EQ(carried, 0u) << outputs(r);
   for (const nlohmann::json& t : r.value("tests", nlohmann::json::array())) {
     EXPECT_LE(t.value("output", "").size(), 2100u) << t.value("name", "");
     for (const nlohmann::json& c : t["extra_data"].value("checks", nlohmann::json::array()))
