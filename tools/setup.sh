@@ -56,7 +56,8 @@ if [ "${#missing[@]}" -gt 0 ]; then
   absent=()
   for p in "${missing[@]}"; do has_candidate "$p" || absent+=("$p"); done
   if [ "${#absent[@]}" -gt 0 ] && grep -qi '^ID=ubuntu' /etc/os-release 2>/dev/null; then
-    # Ubuntu keeps some of the libraries (CLI11, cpp-httplib) in "universe".
+    # Ubuntu 22.04 keeps many of the libraries (OpenImageIO, oneTBB, CGAL, CLI11, GoogleTest) in
+    # "universe" (docs/setup.md).
     say "no candidate for ${absent[*]}: enabling Ubuntu's universe"
     $SUDO apt-get install -y -qq --no-install-recommends software-properties-common >/dev/null
     $SUDO add-apt-repository -y universe >/dev/null
