@@ -192,6 +192,23 @@ SurfaceHit point_around_the_panel(Rng& rng, int i) {
 // away: every field of every sample is the definition's, to the bit. (A mesh's triangle seen
 // under a usable solid angle is sampled by that solid angle, held to its density by the
 // chi-square tests and light_set_near_field_test.)
+/// Light 0's samples from 20000 points around its panel are quad_sample_by_definition's to the
+/// bit, and more than 8000 of them reach it (`why` says which way they should).
+void expect_quad_samples_by_definition(const SampledLights& lights, Rng rng, const char* why) {
+  const SampledLight& l = lights.lights().at(0);
+  long kept = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const SurfaceHit at = point_around_the_panel(rng, i);
+    const glm::vec2 u = rng.next_2d();
+    const LightSample got = lights.make_sample(0, at, u);
+    const LightSample want = quad_sample_by_definition(l, at.p, u);
+    expect_same_sample(got, want, i);
+    if (testing::Test::HasFatalFailure()) return;
+    kept += want.pdf > 0.0f;
+  }
+  EXPECT_GT(kept, 8000) << why;
+}
+
 TEST(FrameworkSampledLights, APanelUnlikeItsLightIsSampledOnItsRectangleBitForBit) {
   Scene s = panel_on_light(0.4f, 0.3f, 10.0f, {0.8f, 0, 0}, {0, 0.6f, 0}, 10.0f);
   s.positions[3].x = -0.2f;  // a trapezoid: a panel of triangles, not a quad
@@ -209,18 +226,8 @@ TEST(FrameworkSampledLights, APanelUnlikeItsLightIsSampledOnItsRectangleBitForBi
   EXPECT_GT(l.panel_slack.z, 0.0f);
   EXPECT_LT(glm::length(l.panel_slack), 1e-5f);
   ASSERT_EQ(lights.lights()[1].kind, SampledLightKind::mesh);
-  Rng rng(11, 4);
-  long kept = 0;
-  for (int i = 0; i < 20000; ++i) {
-    const SurfaceHit at = point_around_the_panel(rng, i);
-    const glm::vec2 u = rng.next_2d();
-    const LightSample got = lights.make_sample(0, at, u);
-    const LightSample want = quad_sample_by_definition(l, at.p, u);
-    expect_same_sample(got, want, i);
-    if (testing::Test::HasFatalFailure()) return;
-    kept += want.pdf > 0.0f;
-  }
-  EXPECT_GT(kept, 8000) << "the samples from below the light should reach it";
+  expect_quad_samples_by_definition(lights, Rng(11, 4),
+                                    "the samples from below the light should reach it");
 }
 
 TEST(FrameworkSampledLights, APanelThatMatchesItsLightSaysNothing) {
@@ -472,18 +479,8 @@ TEST(FrameworkSampledLights, QuadPanelSamplesAreTheirDefinitionBitForBit) {
   const SampledLights lights(s);
   const SampledLight& l = lights.lights().at(0);
   ASSERT_TRUE(l.quad);
-  Rng rng(12, 5);
-  long kept = 0;
-  for (int i = 0; i < 20000; ++i) {
-    const SurfaceHit at = point_around_the_panel(rng, i);
-    const glm::vec2 u = rng.next_2d();
-    const LightSample got = lights.make_sample(0, at, u);
-    const LightSample want = quad_sample_by_definition(l, at.p, u);
-    expect_same_sample(got, want, i);
-    if (testing::Test::HasFatalFailure()) return;
-    kept += want.pdf > 0.0f;
-  }
-  EXPECT_GT(kept, 8000) << "the samples from below the panel should reach it";
+  expect_quad_samples_by_definition(lights, Rng(12, 5),
+                                    "the samples from below the panel should reach it");
 }
 
 /// The point of triangle (a, b, c) nearest q, in double (the regions of Ericson's Real-Time
