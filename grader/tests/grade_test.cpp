@@ -82,6 +82,20 @@ class GraderGrade : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(root_); }
 
+  /// Records of manifest `m`'s Parts 1 and 2 (one step each): Part 1 passed, Part 2 failed.
+  void record_part1_passing_part2_failing(const Manifest& m) {
+    PartResult one;
+    one.part = 1;
+    one.steps.push_back(score_step(m.parts[0].steps[0],
+                                   {CheckResult{"part1.step1.a.x", "test", true, false, "", 0.0, 0}}));
+    PartResult two;
+    two.part = 2;
+    two.steps.push_back(score_step(
+        m.parts[1].steps[0], {CheckResult{"part2.step1.b.x", "test", false, false, "failed", 0.0, 0}}));
+    record_state(one, options_);
+    record_state(two, options_);
+  }
+
   fs::path root_;
   GradeOptions options_;
 };
@@ -168,14 +182,7 @@ TEST_F(GraderGrade, TheEarlierPartsStateIsOneLine) {
   EXPECT_EQ(rests_on_line(m, 3, options_),
             "Part 3's renders trace rays with your Part 1 and Part 2: Part 1 not graded yet "
             "(grader --part 1), Part 2 not graded yet (grader --part 2).");
-  PartResult one;
-  one.part = 1;
-  one.steps.push_back(score_step(m.parts[0].steps[0], {CheckResult{"part1.step1.a.x", "test", true, false, "", 0.0, 0}}));
-  PartResult two;
-  two.part = 2;
-  two.steps.push_back(score_step(m.parts[1].steps[0], {CheckResult{"part2.step1.b.x", "test", false, false, "failed", 0.0, 0}}));
-  record_state(one, options_);
-  record_state(two, options_);
+  record_part1_passing_part2_failing(m);
   std::string line = rests_on_line(m, 3, options_);
   EXPECT_NE(line.find("Part 1 passed ("), std::string::npos) << line;
   EXPECT_NE(line.find("Part 2 has 1 failing step ("), std::string::npos) << line;
@@ -272,14 +279,7 @@ TEST_F(GraderGrade, TheEarlierPartsARenderRunsAreReadFromTheirRecords) {
   const Manifest m = read_manifest(options_.manifest_path);
   EarlierParts none = earlier_parts(m, 3, options_);
   EXPECT_EQ(none.unknown, (std::vector<int>{1, 2}));
-  PartResult one;
-  one.part = 1;
-  one.steps.push_back(score_step(m.parts[0].steps[0], {CheckResult{"part1.step1.a.x", "test", true, false, "", 0.0, 0}}));
-  PartResult two;
-  two.part = 2;
-  two.steps.push_back(score_step(m.parts[1].steps[0], {CheckResult{"part2.step1.b.x", "test", false, false, "failed", 0.0, 0}}));
-  record_state(one, options_);
-  record_state(two, options_);
+  record_part1_passing_part2_failing(m);
   const EarlierParts parts = earlier_parts(m, 3, options_);
   EXPECT_EQ(parts.failing, std::vector<int>{2});
   EXPECT_TRUE(parts.unknown.empty());
