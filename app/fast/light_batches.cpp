@@ -55,9 +55,12 @@ namespace {
 int sample_quad8(const SampledLight& l, const glm::vec3& p, const glm::vec2 u[8], LightSample out[8],
                  const SurfaceHit* from_point, Ray rays[8]) {
   static_assert(offsetof(LightSample, wi) == 0 && offsetof(LightSample, L) == 12 &&
-                    offsetof(LightSample, pdf) == 24 && offsetof(LightSample, distance) == 28 &&
-                    offsetof(LightSample, p) == 32 && offsetof(LightSample, p_error) == 44 &&
-                    offsetof(LightSample, n) == 56 && offsetof(LightSample, delta) == 68 &&
+                    offsetof(LightSample, pdf) == 24 &&
+                    offsetof(LightSample, target.distance) == 28 &&
+                    offsetof(LightSample, target.p) == 32 &&
+                    offsetof(LightSample, target.p_error) == 44 &&
+                    offsetof(LightSample, target.n) == 56 &&
+                    offsetof(LightSample, target.delta) == 68 &&
                     sizeof(LightSample) == 72,
                 "the rows below are LightSample's fields in order");
   static_assert(sizeof(Ray) == 8 * sizeof(float), "a ray is o, d, tmin, tmax side by side");
@@ -186,7 +189,8 @@ int sample_quad8(const SampledLight& l, const glm::vec3& p, const glm::vec2 u[8]
 // In three 32-byte comparisons and two of 4 bytes where the build has AVX2.
 bool LightBatches::same_as_made(const SurfaceHit& hit, const LightSample& ls,
                                 const LightSample& made, const float from[9]) {
-  static_assert(offsetof(LightSample, n) + 3 * sizeof(float) == offsetof(LightSample, delta) &&
+  static_assert(offsetof(LightSample, target.n) + 3 * sizeof(float) ==
+                        offsetof(LightSample, target.delta) &&
                     offsetof(SurfaceHit, ng) + 3 * sizeof(float) - offsetof(SurfaceHit, p) ==
                         9 * sizeof(float),
                 "the sample's floats 0-16 and the point's p, p_error, ng side by side");
@@ -203,7 +207,7 @@ bool LightBatches::same_as_made(const SurfaceHit& hit, const LightSample& ls,
 #else
   if (std::memcmp(s, m, 64) != 0 || std::memcmp(h, f, 32) != 0) return false;
 #endif
-  return std::memcmp(s + 64, m + 64, 4) == 0 && ls.delta == made.delta &&
+  return std::memcmp(s + 64, m + 64, 4) == 0 && ls.target.delta == made.target.delta &&
          std::memcmp(h + 32, f + 32, 4) == 0;
 }
 
@@ -270,7 +274,8 @@ LightSample LightBatches::sample_anew(const SampledLights& set, int index,
 }
 
 Ray LightBatches::shadow_ray_anew(const SurfaceHit& hit, const LightSample& ls) {
-  return std::isfinite(ls.distance) ? spawn_ray_to_in_lanes(hit, ls.wi, ls.p, ls.p_error, ls.n)
+  const ShadowTarget& to = ls.target;
+  return std::isfinite(to.distance) ? spawn_ray_to_in_lanes(hit, ls.wi, to.p, to.p_error, to.n)
                                     : spawn_ray_in_lanes(hit, ls.wi);
 }
 

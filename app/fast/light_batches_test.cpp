@@ -37,10 +37,11 @@ bool same_sample(const LightSample& a, const LightSample& b) {
   // Field by field (not the padding), to the bit.
   return std::memcmp(&a.wi, &b.wi, sizeof a.wi) == 0 && std::memcmp(&a.L, &b.L, sizeof a.L) == 0 &&
          std::memcmp(&a.pdf, &b.pdf, sizeof a.pdf) == 0 &&
-         std::memcmp(&a.distance, &b.distance, sizeof a.distance) == 0 &&
-         std::memcmp(&a.p, &b.p, sizeof a.p) == 0 &&
-         std::memcmp(&a.p_error, &b.p_error, sizeof a.p_error) == 0 &&
-         std::memcmp(&a.n, &b.n, sizeof a.n) == 0 && a.delta == b.delta;
+         std::memcmp(&a.target.distance, &b.target.distance, sizeof a.target.distance) == 0 &&
+         std::memcmp(&a.target.p, &b.target.p, sizeof a.target.p) == 0 &&
+         std::memcmp(&a.target.p_error, &b.target.p_error, sizeof a.target.p_error) == 0 &&
+         std::memcmp(&a.target.n, &b.target.n, sizeof a.target.n) == 0 &&
+         a.target.delta == b.target.delta;
 }
 
 void expect_same_sample_bits(const LightSample& got, const LightSample& want, int i) {
@@ -262,15 +263,17 @@ TEST(FastLightBatches, BatchedSamplesAndShadowRaysAreTheDefinitionsBitForBit) {
         SurfaceHit from = at;
         switch ((i + j) % 10) {
           case 0: other.wi = -other.wi; break;  // the other side of both ends
-          case 1: other.p.x += 0.01f; break;
-          case 2: other.p_error *= 4.0f, other.p_error += glm::vec3(1e-4f); break;
-          case 3: other.n = glm::normalize(other.n + glm::vec3(0.3f, -0.2f, 0.1f)); break;
-          case 4: other.distance = std::numeric_limits<float>::infinity(); break;
+          case 1: other.target.p.x += 0.01f; break;
+          case 2: other.target.p_error *= 4.0f, other.target.p_error += glm::vec3(1e-4f); break;
+          case 3:
+            other.target.n = glm::normalize(other.target.n + glm::vec3(0.3f, -0.2f, 0.1f));
+            break;
+          case 4: other.target.distance = std::numeric_limits<float>::infinity(); break;
           case 5: from.p.y += 0.01f; break;
           case 6: from.p_error *= 4.0f, from.p_error += glm::vec3(1e-4f); break;
           case 7: from.ng = glm::normalize(from.ng + glm::vec3(0.2f, 0.3f, -0.1f)); break;
           case 8: from.ng.z += 0.5f; break;
-          default: other.n.z += 0.5f; break;
+          default: other.target.n.z += 0.5f; break;
         }
         const Ray fresh = make_shadow_ray(from, other);
         ASSERT_TRUE(same_ray(spawn_shadow_ray(from, other), fresh))

@@ -5,7 +5,6 @@
 #pragma once
 
 #include <cstdint>
-#include <limits>
 #include <memory>
 #include <vector>
 
@@ -14,6 +13,7 @@
 
 #include "framework/geometry/ray_query.h"
 #include "framework/geometry/surface_hit.h"
+#include "framework/lights/shadow_target.h"
 #include "framework/math/ray.h"
 
 namespace pt {
@@ -29,12 +29,7 @@ struct LightSample {
   glm::vec3 wi{0.0f};
   glm::vec3 L{0.0f};
   float pdf = 0.0f;
-  // Where the sample lies, for spawn_shadow_ray: an estimator reads none of these.
-  float distance = std::numeric_limits<float>::infinity();  ///< infinite for distant lights
-  glm::vec3 p{0.0f};        ///< the point on the light (finite lights)
-  glm::vec3 p_error{0.0f};  ///< its floating-point error bound
-  glm::vec3 n{0.0f};        ///< the light's surface normal there (zero for point lights)
-  bool delta = false;
+  ShadowTarget target;  ///< for spawn_shadow_ray only: an estimator never reads it
 };
 
 /// What an estimator needs to know of one light.

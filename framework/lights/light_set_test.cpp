@@ -26,8 +26,9 @@ bool same_bits(const T& a, const T& b) {
 
 bool same_sample(const LightSample& a, const LightSample& b) {
   return same_bits(a.wi, b.wi) && same_bits(a.L, b.L) && same_bits(a.pdf, b.pdf) &&
-         same_bits(a.distance, b.distance) && same_bits(a.p, b.p) &&
-         same_bits(a.p_error, b.p_error) && same_bits(a.n, b.n) && a.delta == b.delta;
+         same_bits(a.target.distance, b.target.distance) && same_bits(a.target.p, b.target.p) &&
+         same_bits(a.target.p_error, b.target.p_error) && same_bits(a.target.n, b.target.n) &&
+         a.target.delta == b.target.delta;
 }
 
 /// A floor under a ceiling panel, a point light, a glowing sphere and an ambient light: a light of

@@ -189,11 +189,11 @@ PanelComparison compare_panel(const Scene& scene, const SampledLight& l,
   const float cos_l = glm::dot(-wi, n);
   if (one_sided && !(cos_l > 0.0f)) return false;
   ls->wi = wi;
-  ls->distance = dist;
-  ls->p = q;
-  ls->p_error = gamma(6) * (glm::abs(wa) + glm::abs(wb) + glm::abs(wc));
-  if (slack) ls->p_error += *slack;
-  ls->n = n;
+  ls->target.distance = dist;
+  ls->target.p = q;
+  ls->target.p_error = gamma(6) * (glm::abs(wa) + glm::abs(wb) + glm::abs(wc));
+  if (slack) ls->target.p_error += *slack;
+  ls->target.n = n;
   ls->pdf = area_to_solid_angle_pdf(l.inv_area, dist, cos_l);
   ls->L = ls->pdf > 0.0f ? l.radiance : glm::vec3(0.0f);
   return true;
@@ -533,10 +533,10 @@ LightSample SampledLights::sample_other(const SampledLight& l, const SurfaceHit&
     float dist = glm::length(d);
     if (!(dist > 0.0f) || !std::isfinite(dist)) return false;
     ls.wi = d / dist;
-    ls.distance = dist;
-    ls.p = q;
-    ls.p_error = q_error;
-    ls.n = n;
+    ls.target.distance = dist;
+    ls.target.p = q;
+    ls.target.p_error = q_error;
+    ls.target.n = n;
     return true;
   };
   switch (l.kind) {
@@ -544,7 +544,7 @@ LightSample SampledLights::sample_other(const SampledLight& l, const SurfaceHit&
     case SampledLightKind::spot: {
       const glm::vec3 pos = l.source->position;
       if (!finish_at(pos, glm::vec3(0.0f), glm::vec3(0.0f))) return {};
-      float scale = point_falloff(l.source, ls.distance);
+      float scale = point_falloff(l.source, ls.target.distance);
       if (l.kind == SampledLightKind::spot) {
         float cos_angle = glm::dot(-ls.wi, glm::normalize(l.source->direction));
         float cos_half = std::cos(glm::radians(0.5f * l.source->falloff_degrees));
@@ -554,14 +554,14 @@ LightSample SampledLights::sample_other(const SampledLight& l, const SurfaceHit&
       }
       ls.L = l.radiance * scale;
       ls.pdf = 1.0f;
-      ls.delta = true;
+      ls.target.delta = true;
       return ls;
     }
     case SampledLightKind::directional:
       ls.wi = -glm::normalize(l.source->direction);
       ls.L = l.radiance;
       ls.pdf = 1.0f;
-      ls.delta = true;
+      ls.target.delta = true;
       return ls;
     case SampledLightKind::parallelogram: {
       glm::vec3 q = l.corner + u.x * l.edge_u + u.y * l.edge_v;
@@ -570,7 +570,7 @@ LightSample SampledLights::sample_other(const SampledLight& l, const SurfaceHit&
       if (!finish_at(q, err, l.normal)) return {};
       float cos_l = glm::dot(-ls.wi, l.normal);
       if (!(cos_l > 0.0f)) return {};  // the back of a one-sided light
-      ls.pdf = area_to_solid_angle_pdf(1.0f / l.area, ls.distance, cos_l);
+      ls.pdf = area_to_solid_angle_pdf(1.0f / l.area, ls.target.distance, cos_l);
       ls.L = ls.pdf > 0.0f ? l.radiance : glm::vec3(0.0f);
       return ls;
     }
@@ -602,7 +602,7 @@ LightSample SampledLights::sample_other(const SampledLight& l, const SurfaceHit&
         glm::vec3 n = square_to_uniform_sphere(u);
         q = s.center + r * n;
         if (!finish_at(q, gamma(5) * (glm::abs(s.center) + glm::vec3(r)), n)) return {};
-        ls.pdf = area_to_solid_angle_pdf(1.0f / l.area, ls.distance, glm::dot(ls.wi, n));
+        ls.pdf = area_to_solid_angle_pdf(1.0f / l.area, ls.target.distance, glm::dot(ls.wi, n));
       }
       ls.L = ls.pdf > 0.0f && std::isfinite(ls.pdf) ? l.radiance : glm::vec3(0.0f);
       if (!std::isfinite(ls.pdf)) ls.pdf = 0.0f;

@@ -144,7 +144,8 @@ class SampledLights {
 /// answer when no FasterLightSampling is installed): spawn_ray_to its point, or a ray in its
 /// direction for a distant light. It neither hits the surface it leaves nor the light it aims at.
 inline Ray make_shadow_ray(const SurfaceHit& hit, const LightSample& ls) {
-  return std::isfinite(ls.distance) ? spawn_ray_to(hit, ls.wi, ls.p, ls.p_error, ls.n)
+  const ShadowTarget& to = ls.target;
+  return std::isfinite(to.distance) ? spawn_ray_to(hit, ls.wi, to.p, to.p_error, to.n)
                                     : spawn_ray(hit, ls.wi);
 }
 

@@ -146,10 +146,10 @@ LightSample surface_sample_by_definition(const SampledLight& l, const glm::vec3&
   if (!(dist > 0.0f) || !std::isfinite(dist)) return {};
   LightSample ls;
   ls.wi = d / dist;
-  ls.distance = dist;
-  ls.p = q;
-  ls.p_error = gamma(6) * (glm::abs(wa) + glm::abs(wb) + glm::abs(wc));
-  ls.n = n;
+  ls.target.distance = dist;
+  ls.target.p = q;
+  ls.target.p_error = gamma(6) * (glm::abs(wa) + glm::abs(wb) + glm::abs(wc));
+  ls.target.n = n;
   const float cos_l = glm::dot(-ls.wi, n);
   if (one_sided && !(cos_l > 0.0f)) return {};
   ls.pdf = area_to_solid_angle_pdf(1.0f / l.area, dist, cos_l);
@@ -166,12 +166,13 @@ void expect_same_bits(const glm::vec3& a, const glm::vec3& b, const char* what, 
 void expect_same_sample(const LightSample& got, const LightSample& want, int i) {
   expect_same_bits(got.wi, want.wi, "wi", i);
   expect_same_bits(got.L, want.L, "L", i);
-  expect_same_bits(got.p, want.p, "p", i);
-  expect_same_bits(got.p_error, want.p_error, "p_error", i);
-  expect_same_bits(got.n, want.n, "n", i);
+  expect_same_bits(got.target.p, want.target.p, "p", i);
+  expect_same_bits(got.target.p_error, want.target.p_error, "p_error", i);
+  expect_same_bits(got.target.n, want.target.n, "n", i);
   ASSERT_EQ(float_to_bits(got.pdf), float_to_bits(want.pdf)) << "pdf, sample " << i;
-  ASSERT_EQ(float_to_bits(got.distance), float_to_bits(want.distance)) << "distance, " << i;
-  ASSERT_EQ(got.delta, want.delta) << "delta, sample " << i;
+  ASSERT_EQ(float_to_bits(got.target.distance), float_to_bits(want.target.distance))
+      << "distance, " << i;
+  ASSERT_EQ(got.target.delta, want.target.delta) << "delta, sample " << i;
 }
 
 LightSample quad_sample_by_definition(const SampledLight& l, const glm::vec3& p, glm::vec2 u);
@@ -284,13 +285,13 @@ TEST(FrameworkSampledLights, LightSamplesLandOnTheLightsRectangle) {
     const LightSample ls = lights.make_sample(0, below, rng.next_2d());
     ASSERT_GT(ls.pdf, 0.0f);
     EXPECT_EQ(ls.L, glm::vec3(10.0f));
-    ASSERT_LE(std::abs(ls.p.x), 0.3f + 1e-6f) << "the light is 0.6 across x";
-    ASSERT_LE(std::abs(ls.p.y), 0.4f + 1e-6f);
-    EXPECT_EQ(ls.p.z, 1.0f);
-    const float d = ls.distance;
+    ASSERT_LE(std::abs(ls.target.p.x), 0.3f + 1e-6f) << "the light is 0.6 across x";
+    ASSERT_LE(std::abs(ls.target.p.y), 0.4f + 1e-6f);
+    EXPECT_EQ(ls.target.p.z, 1.0f);
+    const float d = ls.target.distance;
     EXPECT_NEAR(ls.pdf, d * d / (0.48f * ls.wi.z), 1e-4f * ls.pdf);
-    reached_x = std::max(reached_x, std::abs(ls.p.x));
-    reached_y = std::max(reached_y, std::abs(ls.p.y));
+    reached_x = std::max(reached_x, std::abs(ls.target.p.x));
+    reached_y = std::max(reached_y, std::abs(ls.target.p.y));
   }
   EXPECT_GT(reached_y, 0.39f) << "the samples cover the light's 0.8 along y, not the panel's 0.6";
   EXPECT_LT(reached_x, 0.3f + 1e-6f) << "and never the panel's 0.4 along x";
@@ -320,9 +321,9 @@ TEST(FrameworkSampledLights, ACourseScenesLightSamplesLandOnTheAreaLightsRectang
     const LightSample ls = lights.make_sample(0, floor, rng.next_2d());
     ASSERT_GT(ls.pdf, 0.0f);
     EXPECT_EQ(ls.L, area.radiance);
-    const glm::vec3 d = ls.p - area.position;
-    ASSERT_LE(std::abs(d.x), 0.3f + 1e-5f) << "x " << ls.p.x;
-    ASSERT_LE(std::abs(d.y), 0.4f + 1e-5f) << "y " << ls.p.y;
+    const glm::vec3 d = ls.target.p - area.position;
+    ASSERT_LE(std::abs(d.x), 0.3f + 1e-5f) << "x " << ls.target.p.x;
+    ASSERT_LE(std::abs(d.y), 0.4f + 1e-5f) << "y " << ls.target.p.y;
     ASSERT_NEAR(d.z, 0.0f, 1e-5f);
     reached_x = std::max(reached_x, std::abs(d.x));
     reached_y = std::max(reached_y, std::abs(d.y));
@@ -415,8 +416,8 @@ TEST(FrameworkSampledLights, AnAreaLightWithoutAPanelCannotBeHit) {
 LightSample quad_sample_by_definition(const SampledLight& l, const glm::vec3& p, glm::vec2 u) {
   LightSample ls = surface_sample_by_definition(l, p, l.corner, u.x * l.edge_u, u.y * l.edge_v,
                                                 l.normal, true);
-  if (ls.distance < std::numeric_limits<float>::infinity())  // a sample was made
-    ls.p_error += l.panel_slack;
+  if (ls.target.distance < std::numeric_limits<float>::infinity())  // a sample was made
+    ls.target.p_error += l.panel_slack;
   return ls;
 }
 
@@ -528,13 +529,14 @@ TEST(FrameworkSampledLights, ARoundedQuadSamplesPointsWithinTheirErrorOfItsTrian
     if (!(ls.pdf > 0.0f)) continue;
     ++reached;
     // Within the error box of the nearest point of one of the two triangles.
-    const glm::dvec3 q(ls.p);
+    const glm::dvec3 q(ls.target.p);
     bool within = false;
     for (const Triangle& t : s.triangles) {
       const glm::dvec3 gap = glm::abs(q - nearest_on_triangle(q, glm::dvec3(s.positions[t.v[0]]),
                                                               glm::dvec3(s.positions[t.v[1]]),
                                                               glm::dvec3(s.positions[t.v[2]])));
-      if (gap.x <= ls.p_error.x && gap.y <= ls.p_error.y && gap.z <= ls.p_error.z) within = true;
+      const glm::vec3& bound = ls.target.p_error;
+      if (gap.x <= bound.x && gap.y <= bound.y && gap.z <= bound.z) within = true;
     }
     ASSERT_TRUE(within) << "sample " << i << " at " << q.x << " " << q.y << " " << q.z;
   }
