@@ -18,7 +18,7 @@ bool usable(const glm::vec3& v) {
 ShadingPointBase::ShadingPointBase(const Scene& scene, const Ray& ray, const SurfaceHit& h)
     : hit(h) {
   static const Material kDefault;
-  material = h.material < scene.materials.size() ? &scene.materials[h.material] : &kDefault;
+  material_ = h.material < scene.materials.size() ? &scene.materials[h.material] : &kDefault;
   // The normals are worked on in locals read from h and stored once at the end: reading them
   // back from the copy just made (hit) waited on that copy's stores, which a load spanning two
   // of them cannot take its value from.
@@ -26,26 +26,26 @@ ShadingPointBase::ShadingPointBase(const Scene& scene, const Ray& ray, const Sur
   ng = glm::normalize(ng);
   glm::vec3 n = usable(h.n) ? glm::normalize(h.n) : ng;
   glm::vec3 to_viewer = usable(ray.d) ? -glm::normalize(ray.d) : ng;
-  switch (material->kind) {
+  switch (material_->kind) {
     case MaterialKind::glass:
-      glass_ = GlassBsdf(material->reflectance, material->transmittance, material->ior);
-      bsdf = &glass_;
+      own_.glass = GlassBsdf(material_->reflectance, material_->transmittance, material_->ior);
+      bsdf = &own_.glass;
       break;
     case MaterialKind::mirror:
-      mirror_ = MirrorBsdf(material->reflectance);
-      bsdf = &mirror_;
+      own_.mirror = MirrorBsdf(material_->reflectance);
+      bsdf = &own_.mirror;
       break;
     case MaterialKind::microfacet:
-      microfacet_ = MicrofacetBsdf(material->roughness, material->eta, material->k);
-      bsdf = &microfacet_;
+      own_.microfacet = MicrofacetBsdf(material_->roughness, material_->eta, material_->k);
+      bsdf = &own_.microfacet;
       break;
     case MaterialKind::emission:  // the course's emitters glow and reflect nothing
-      bsdf = &black_;
+      bsdf = &own_.black;
       break;
     default:  // diffuse: ShadingPointWith makes the diffuse BSDF
       break;
   }
-  if (material->kind != MaterialKind::glass && glm::dot(to_viewer, ng) < 0.0f) {
+  if (material_->kind != MaterialKind::glass && glm::dot(to_viewer, ng) < 0.0f) {
     ng = -ng;
     n = -n;
   }

@@ -6,10 +6,8 @@
 // the emitters' black BSDF are the framework's own.
 #pragma once
 
-#include "framework/bsdf/black.h"
 #include "framework/bsdf/bsdf.h"
-#include "framework/bsdf/microfacet_bsdf.h"
-#include "framework/bsdf/specular.h"
+#include "framework/bsdf/framework_bsdfs.h"
 #include "framework/geometry/surface_hit.h"
 #include "framework/math/frame.h"
 #include "framework/math/ray.h"
@@ -29,19 +27,16 @@ class ShadingPointBase {
   SurfaceHit hit;
   Frame frame{glm::vec3(0.0f, 0.0f, 1.0f)};  ///< z is the shading normal
   glm::vec3 wo{0.0f, 0.0f, 1.0f};            ///< towards the viewer, in the local frame
-  const Material* material = nullptr;
   /// The material's BSDF; left null here for a diffuse material, whose BSDF the derived
   /// ShadingPointWith makes.
   const Bsdf* bsdf = nullptr;
 
  protected:
   ShadingPointBase(const Scene& scene, const Ray& ray, const SurfaceHit& hit);
+  const Material* material_ = nullptr;  ///< the hit's material (its albedo makes the diffuse BSDF)
 
  private:
-  MirrorBsdf mirror_;
-  GlassBsdf glass_;
-  MicrofacetBsdf microfacet_;
-  BlackBsdf black_;  ///< a CGL emission material: it glows and reflects nothing
+  FrameworkBsdfs own_;  ///< where `bsdf` points for a material that is not diffuse
 };
 
 /// A shading point whose diffuse materials get a `Diffuse(material->albedo)`.
@@ -51,7 +46,7 @@ class ShadingPointWith final : public ShadingPointBase {
   ShadingPointWith(const Scene& scene, const Ray& ray, const SurfaceHit& hit)
       : ShadingPointBase(scene, ray, hit) {
     if (!bsdf) {
-      diffuse_ = Diffuse(material->albedo);
+      diffuse_ = Diffuse(material_->albedo);
       bsdf = &diffuse_;
     }
   }

@@ -63,7 +63,11 @@ class ShadedByRig {
  public:
   ShadedByRig(const Scene& scene, const Ray& ray, const SurfaceHit& hit) : point(scene, ray, hit) {
     if (dynamic_cast<const Diffuse*>(point.bsdf) != nullptr) {
-      lambertian_ = RigLambertian(point.material->albedo);
+      // The albedo the shading point gave its diffuse BSDF (the default material's where the
+      // hit names none).
+      lambertian_ = RigLambertian(point.hit.material < scene.materials.size()
+                                      ? scene.materials[point.hit.material].albedo
+                                      : Material{}.albedo);
       point.bsdf = &lambertian_;
     }
   }
