@@ -43,11 +43,13 @@ Ray generate_camera_ray(const Camera& camera, float image_aspect, glm::vec2 film
   // END SOLUTION
   // STUDENT: return the world-space ray through the film point `film` ((0,0) the image's
   // bottom-left, (1,1) its top-right) for an image of aspect `image_aspect`, through the lens
-  // point `lens` picks when the camera has a lens. What must hold (each is a check,
-  // docs/handout/part1.md step 1): the film's edges span the field of view (hfov across, the angle
-  // the aspect gives up and down); the origin is the camera's position, or a point of its
-  // aperture; the direction has unit length; tmin is 0 and tmax reaches the far plane z = -zfar;
-  // lens rays through one film point meet on the plane in focus and are uniform over the aperture.
+  // point `lens` picks when the camera has a lens (camera.lens_radius > 0). What must hold (each
+  // is a check, docs/handout/part1.md step 1): the film's edges span the field of view (hfov
+  // across, the angle the aspect gives up and down); camera_to_world places the ray: the origin
+  // is the camera's position, or a point of its aperture, the direction turned as a direction;
+  // the direction has unit length; tmin is 0 and tmax reaches the far plane z = -zfar; lens rays
+  // through one film point meet on the plane in focus (z = -camera.focal_distance) and are
+  // uniform over the aperture.
   PT_STUDENT_TODO("part 1", "generate_camera_ray");
   (void)camera, (void)image_aspect, (void)film, (void)lens;
   return Ray{};

@@ -8,6 +8,7 @@
 
 namespace pt {
 
+/// Step 1 (camera_ray).
 /// The world-space camera ray through film point `film`, where (0,0) is the image's bottom-left
 /// corner and (1,1) its top-right. `image_aspect` is width/height of the image being rendered:
 /// the horizontal field of view is the camera's, the vertical one follows from the aspect.

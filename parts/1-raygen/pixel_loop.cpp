@@ -18,7 +18,8 @@ Ray camera_ray_through_pixel(const Camera& camera, const PixelRef& px, glm::vec2
   // STUDENT: return the camera ray through the point `offset` of pixel `px` ((0,0) the pixel's
   // top-left corner, (1,1) its bottom-right; rows count from the image's top), with `lens` as
   // the lens sample. The film has (0,0) at the image's bottom-left, and the image's aspect is its
-  // width over its height. Checked: docs/handout/part1.md step 2.
+  // width over its height; generate_camera_ray makes the ray. Checked: docs/handout/part1.md
+  // step 2.
   PT_STUDENT_TODO("part 1", "camera_ray_through_pixel");
   (void)camera, (void)px, (void)offset, (void)lens;
   return Ray{};

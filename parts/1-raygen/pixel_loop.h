@@ -23,6 +23,7 @@ struct PixelRef {
   int width = 1, height = 1;   ///< image size in pixels
 };
 
+/// Step 2 (pixel_loop).
 /// The camera ray through the point `offset` of pixel `px`, where (0,0) is the pixel's top-left
 /// corner and (0.5,0.5) its centre, with `lens` the thin lens's sample (generate_camera_ray).
 /// The one place a pixel becomes film coordinates: the pixel loop calls it, and so does the

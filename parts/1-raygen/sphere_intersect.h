@@ -6,6 +6,7 @@
 
 namespace pt {
 
+/// Step 4 (sphere).
 /// The nearest t with ray.tmin < t < ray.tmax where `ray` meets the sphere's surface, if any,
 /// in *t. Both roots count (a ray that starts inside hits the far side). The quadratic is solved
 /// without catastrophic cancellation, so a far sphere or a near-tangent ray still gets an

@@ -9,6 +9,7 @@
 
 namespace pt {
 
+/// Step 3 (triangle) and step 5 (watertight).
 /// Whether `ray` meets triangle (p0, p1, p2) at some ray.tmin < t < ray.tmax; on a hit, fills
 /// *hit with t and the barycentric coordinates (b0 for p0). Watertight: a ray through an edge or a
 /// vertex shared by two triangles hits at least one of them, whatever the rounding (Woop, Benthin

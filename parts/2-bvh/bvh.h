@@ -90,6 +90,7 @@ class Bvh final : public RayQuery {
     BoxRay box;
   };
 
+  /// Step 3 (traversal).
   /// The student's nearest-first walk: visits leaves through intersect_leaf until no node left
   /// can hold a nearer hit. intersect() makes the SurfaceHit of the winner afterwards.
   void traverse_nearest(NearestState* state) const;

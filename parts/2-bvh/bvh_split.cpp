@@ -10,8 +10,8 @@ MidpointSplit midpoint_split(const Bounds3& centroid_bounds) {
   const int axis = centroid_bounds.longest_axis();
   return {axis, 0.5f * (centroid_bounds.lo[axis] + centroid_bounds.hi[axis])};
   // END SOLUTION
-  // STUDENT: return the axis along which the centroids spread the most and the plane halfway
-  // along it (primitives whose centroid lies below it go to the first child).
+  // STUDENT: midpoint_split returns the axis along which the centroids spread the most and the
+  // plane halfway along it (primitives whose centroid lies below it go to the first child).
   PT_STUDENT_TODO("part 2", "midpoint_split");
   (void)centroid_bounds;
   return {};
@@ -47,11 +47,11 @@ SahSplit best_sah_split(const SahBin* bins, int bin_count, float parent_area,
   }
   return best;
   // END SOLUTION
-  // STUDENT: return the plane between bins (0 to bin_count - 2) of least SAH cost, with that cost
-  // (the header gives the formula). A plane that leaves a side empty is no split; on equal costs
-  // the lower plane wins; when no plane works, plane -1 with an infinite cost. Checked against an
-  // evaluation of every plane on its own (docs/handout/part2.md step 2); a build calls this for
-  // every node, so it should take time linear in bin_count.
+  // STUDENT: best_sah_split returns the plane between bins (0 to bin_count - 2) of least SAH
+  // cost, with that cost (the header gives the formula). A plane that leaves a side empty is no
+  // split; on equal costs the lower plane wins; when no plane works, plane -1 with an infinite
+  // cost. Checked against an evaluation of every plane on its own (docs/handout/part2.md step 2);
+  // a build calls this for every node, so it should take time linear in bin_count.
   PT_STUDENT_TODO("part 2", "best_sah_split");
   (void)bins, (void)bin_count, (void)parent_area, (void)costs;
   return {};

@@ -21,6 +21,7 @@ struct MidpointSplit {
   float position = 0.0f;
 };
 
+/// Step 2 (split).
 /// The midpoint split of a node whose primitives' centroids span `centroid_bounds`: the axis along
 /// which the centroids spread the most, cut halfway.
 MidpointSplit midpoint_split(const Bounds3& centroid_bounds);

@@ -48,8 +48,9 @@ void Bvh::traverse_nearest(NearestState* state) const {
   }
   return;
   // END SOLUTION
-  // STUDENT: walk the tree so that every leaf that may hold a hit nearer than the best so far goes
-  // through intersect_leaf(node, &st), which keeps the best hit and shrinks st.cull.tmax; use
+  // STUDENT: traverse_nearest walks the tree so that every leaf that may hold a hit nearer than
+  // the best so far goes through intersect_leaf(node, &st), which keeps the best hit and shrinks
+  // st.cull.tmax; use
   // st.cull.tmax as the far end of your box tests. What must hold (docs/handout/part2.md step
   // 3): brute force's nearest hit on every tree, including ones dozens of levels deep; and few
   // primitive tests per ray, as a walk that opens nearer boxes first and none that start beyond

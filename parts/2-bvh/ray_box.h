@@ -21,6 +21,7 @@ struct BoxRay {
   explicit BoxRay(const Ray& ray) : o(ray.o), inv_d(1.0f / ray.d), tmin(ray.tmin) {}
 };
 
+/// Step 1 (ray_box).
 /// Whether the ray meets `box` at some distance in [ray.tmin, tmax]; on success *t_entry is where
 /// it enters (clamped to tmin), which lets a traversal visit the nearer of two boxes first.
 /// Conservative: each slab's far distance is enlarged and its near distance reduced by their
