@@ -47,6 +47,10 @@ enum class Fn : uint16_t {
   sample_pixel_adaptive,
 };
 
+/// The callback a BVH walk (Bvh::traverse_nearest, Bvh::occluded) makes for each leaf test: the
+/// judge runs the test itself, so its answers and the work it counts are the judge's own.
+inline constexpr int kLeafTest = 1;
+
 /// The name a student knows a function by, for messages.
 const char* name_of(Fn fn);
 

@@ -10,6 +10,8 @@
 #define BEST_SAH_SPLIT "_ZN2pt14best_sah_splitEPKNS_6SahBinEifRKNS_8SahCostsE"
 #define BVH_TRAVERSE_NEAREST "_ZNK2pt3Bvh16traverse_nearestEPNS0_12NearestStateE"
 #define BVH_OCCLUDED "_ZNK2pt3Bvh8occludedERKNS_3RayE"
+#define INTERSECT_LEAF "_ZN2pt14intersect_leafERKNS_5SceneERKNS_14LeafPrimitivesEjjPNS_15NearestHitQueryE"
+#define LEAF_OCCLUDES "_ZN2pt13leaf_occludesERKNS_5SceneERKNS_14LeafPrimitivesEjjRKNS_3RayE"
 
 namespace pt::judge {
 namespace real {
@@ -20,6 +22,12 @@ SahSplit best_sah_split(const SahBin*, int, float, const SahCosts&) PT_REAL(BEST
 // at the same address, is the NearestHitQuery the walk fills.
 void bvh_traverse_nearest(const Bvh*, NearestHitQuery*) PT_REAL(BVH_TRAVERSE_NEAREST);
 bool bvh_occluded(const Bvh*, const Ray&) PT_REAL(BVH_OCCLUDED);
+// The given leaf tests the walks call: each is a callback of the walk, which the judge answers
+// by testing the same leaf itself.
+void intersect_leaf(const Scene&, const LeafPrimitives&, uint32_t, uint32_t, NearestHitQuery*)
+    PT_REAL(INTERSECT_LEAF);
+bool leaf_occludes(const Scene&, const LeafPrimitives&, uint32_t, uint32_t, const Ray&)
+    PT_REAL(LEAF_OCCLUDES);
 }  // namespace real
 
 bool wrap_intersect_box(const Bounds3&, const BoxRay&, float, float*) PT_WRAP(INTERSECT_BOX);
@@ -72,6 +80,38 @@ bool wrap_bvh_occluded(const Bvh* bvh, const Ray& ray) {
   bool blocked = real::bvh_occluded(bvh, ray);
   call.out.put(uint8_t(blocked));
   call.returned();
+  return blocked;
+}
+
+// A leaf test is named by its leaf's primitives in the tree's order: the judge refuses a range
+// that is not one leaf of the tree.
+void wrap_intersect_leaf(const Scene&, const LeafPrimitives&, uint32_t, uint32_t, NearestHitQuery*)
+    PT_WRAP(INTERSECT_LEAF);
+void wrap_intersect_leaf(const Scene& scene, const LeafPrimitives& leaves, uint32_t first,
+                         uint32_t count, NearestHitQuery* q) {
+  ProbeCallback test(Fn::bvh_traverse_nearest, kLeafTest);
+  test.args.put(first);
+  test.args.put(count);
+  test.begin();
+  real::intersect_leaf(scene, leaves, first, count, q);
+  test.answer.put(q->best);
+  test.answer.put(q->best_t);
+  test.answer.put(q->cull.tmax);
+  test.end();
+}
+
+bool wrap_leaf_occludes(const Scene&, const LeafPrimitives&, uint32_t, uint32_t, const Ray&)
+    PT_WRAP(LEAF_OCCLUDES);
+bool wrap_leaf_occludes(const Scene& scene, const LeafPrimitives& leaves, uint32_t first,
+                        uint32_t count, const Ray& ray) {
+  ProbeCallback test(Fn::bvh_occluded, kLeafTest);
+  test.args.put(first);
+  test.args.put(count);
+  test.args.put(ray);
+  test.begin();
+  const bool blocked = real::leaf_occludes(scene, leaves, first, count, ray);
+  test.answer.put(uint8_t(blocked));
+  test.end();
   return blocked;
 }
 

@@ -18,6 +18,12 @@
 
 namespace pt {
 
+namespace test {
+struct LeafLog;
+/// Given: writes one leaf test into *log (framework/testing/leaf_log.h).
+void note_leaf_test(LeafLog* log, uint32_t node, uint32_t count, float tmax);
+}  // namespace test
+
 /// How to build a BVH.
 struct BvhOptions {
   BvhSplitMethod split = BvhSplitMethod::sah;
@@ -77,6 +83,10 @@ class Bvh final : public RayQuery {
   /// count per ray with what a good walk of the same tree needs); a render never sets it. Not
   /// for a tree shared between threads while it counts.
   void count_primitive_tests(uint64_t* counter) { primitive_tests_ = counter; }
+  /// Writes into *log every leaf test of this tree from now on (null: stop): the node, and the
+  /// ray's far end at the test. Given code, for Part 2's traversal tests, which check from it
+  /// that a walk opens every leaf that may hold a nearer hit and none that cannot.
+  void log_leaf_tests(test::LeafLog* log) { leaf_log_ = log; }
 
   static constexpr int kMaxLeafSize = 255;
   /// Deeper than this the build splits by count, so no traversal stack can overflow.
@@ -97,18 +107,22 @@ class Bvh final : public RayQuery {
   /// The leaf tests, for a node of this tree.
   void intersect_leaf(const BvhNode& leaf, NearestState* state) const {
     if (primitive_tests_) *primitive_tests_ += leaf.count;
+    if (leaf_log_) test::note_leaf_test(leaf_log_, index_of(leaf), leaf.count, state->cull.tmax);
     pt::intersect_leaf(scene_, leaves_, leaf.offset, leaf.count, state);
   }
   bool leaf_occludes(const BvhNode& leaf, const Ray& ray) const {
     if (primitive_tests_) *primitive_tests_ += leaf.count;
+    if (leaf_log_) test::note_leaf_test(leaf_log_, index_of(leaf), leaf.count, ray.tmax);
     return pt::leaf_occludes(scene_, leaves_, leaf.offset, leaf.count, ray);
   }
+  uint32_t index_of(const BvhNode& node) const { return uint32_t(&node - nodes_.data()); }
 
   const Scene& scene_;
   std::vector<BvhNode> nodes_;
   LeafPrimitives leaves_;
   BvhStats stats_;
   uint64_t* primitive_tests_ = nullptr;
+  test::LeafLog* leaf_log_ = nullptr;
 
   friend class BvhBuilder;
 };
