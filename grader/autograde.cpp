@@ -25,6 +25,7 @@
 #include "grader/manifest.h"
 #include "grader/report.h"
 #include "grader/scene_variant.h"
+#include "grader/student_values.h"
 
 namespace fs = std::filesystem;
 
@@ -347,6 +348,9 @@ int autograde(const std::string& root, const std::vector<int>& parts,
     options.variant_key = draw_variant_key();
     // Of what the student's code prints, only the handout's own stub lines are quoted.
     if (!tuning.quote_student_lines) options.stub_messages = stub_messages(L.stubs(), files);
+    // One results file: one budget of the student's values for every part.
+    int values_left = kValuesPerResults;
+    options.quote_budget = &values_left;
     remove_part_programs(L);
     std::vector<PartResult> all;
     for (const PartSpec& spec : manifest.parts) {

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "grader/second_solution.h"
+#include "grader/student_values.h"
 
 namespace fs = std::filesystem;
 
@@ -137,6 +138,7 @@ std::vector<SeedRun> run_false_failures(const Manifest& manifest, const GradeOpt
     RenderCheck check = pick->check;
     check.seed = pick->seeds[pick->next++];
     CheckResult r = grade_render(manifest, check, by_solution[pick->solution]);
+    r.output = release_values(r.output, nullptr);  // the instructor's own log: every value
     // A course scene that is not there, or a reference not made (or not recorded) yet: nothing
     // to measure, and not correct code failing.
     const bool no_reference = !r.pass && r.output.rfind("the reference ", 0) == 0;

@@ -29,6 +29,7 @@
 #include "grader/rules.h"
 #include "grader/scene_variant.h"
 #include "grader/step_at_fault.h"
+#include "grader/student_values.h"
 
 namespace fs = std::filesystem;
 
@@ -200,7 +201,9 @@ std::vector<CheckResult> run_judged(int part, const PartSpec& spec, const GradeO
       r.output = skipped_message(
           bounded(relative_to(outcomes[i].message, options.source_dir), kCheckMessageChars));
     } else if (!r.pass) {
-      r.output = bounded(relative_to(outcomes[i].message, options.source_dir), kCheckMessageChars);
+      // The judge's words, its numbers the student's values (bounded, released under a budget).
+      r.output = mark_values(
+          bounded(relative_to(outcomes[i].message, options.source_dir), kCheckMessageChars));
       r.todo = student_lines(outcomes[i].student_output, options);
     }
     checks.push_back(r);
@@ -224,7 +227,7 @@ std::vector<CheckResult> run_tests(int part, const PartSpec& spec, const GradeOp
   pugi::xml_document doc;
   if (!doc.load_file(junit.c_str())) {
     *problem = "the tests of part " + std::to_string(part) + " did not run (ctest " + c.describe() +
-               ")\n" + output_excerpt(c.output, 6);
+               ")";
     return checks;
   }
   for (pugi::xpath_node n : doc.select_nodes("//testcase")) {
@@ -253,7 +256,7 @@ std::vector<CheckResult> run_tests(int part, const PartSpec& spec, const GradeOp
                  out.find("Exception") != std::string::npos)
           f = "crashed (" + (message.empty() ? std::string("signal") : message) + ")";
       }
-      r.output = bounded(relative_to(f, options.source_dir), kCheckMessageChars);
+      r.output = mark_values(bounded(relative_to(f, options.source_dir), kCheckMessageChars));
       r.todo = student_lines(out, options);
     }
     checks.push_back(r);
@@ -569,9 +572,9 @@ CheckResult grade_render(const Manifest& manifest, const RenderCheck& check,
   r.seconds = c.seconds;
   r.todo = student_lines(c.output, options);
   if (!c.ok()) {
-    // In the sandbox, nothing of its own output but the stubs' lines (r.todo).
-    r.output = "the render " + c.describe() + ": " + command_line(argv) +
-               (r.todo.empty() && !options.sandbox ? "\n" + output_excerpt(c.output, 8) : "");
+    // Nothing of its own output but the stubs' lines (r.todo): the command shows the rest to
+    // whoever runs it. Its exit status is the student's value.
+    r.output = "the render " + mark_values(c.describe()) + ": " + command_line(argv);
     return r;
   }
   // A stub of this part that ran is not the student's answer. No stub gives a right image (that
@@ -605,8 +608,10 @@ CheckResult grade_render(const Manifest& manifest, const RenderCheck& check,
   }
   try {
     render = read_estimate_exr(out.string());
-  } catch (const std::exception& e) {
-    r.output = std::string("the render's output cannot be read: ") + e.what();
+  } catch (const std::exception&) {
+    // Not the reader's words: they may quote the file's own header, which the student wrote.
+    r.output = "the render's output cannot be read as the renderer's EXR (its mean, variance and "
+               "count per pixel)";
     return r;
   }
   try {
@@ -621,7 +626,7 @@ CheckResult grade_render(const Manifest& manifest, const RenderCheck& check,
   if (!options.sandbox) plausibility.expected_count = 0;
   VarianceConsistencyResult plausible = check_variance_consistency(render, ref, plausibility);
   if (!plausible.pass) {
-    r.output = plausible.summary;
+    r.output = mark_values(plausible.summary);
     return r;
   }
   BlockTestOptions bt;
@@ -633,12 +638,13 @@ CheckResult grade_render(const Manifest& manifest, const RenderCheck& check,
   Comparison cmp = compare_render(render, ref, bt, check.kind,
                                   (fs::absolute(options.out_dir) / (check.name + "_diff.png")).string());
   r.pass = cmp.pass;
-  r.output = cmp.message;
+  // Statistics of the student's image: its values, as a judge's are.
+  r.output = mark_values(cmp.message);
   if (r.pass && check.noise_limit > 0.0) {
     std::string noise = check_noise(render, ref, check.noise_limit);
     if (!noise.empty()) {
       r.pass = false;
-      r.output = noise;
+      r.output = mark_values(noise);
     }
   }
   return r;
@@ -646,6 +652,20 @@ CheckResult grade_render(const Manifest& manifest, const RenderCheck& check,
 
 namespace {
 fs::path part_folder(int part, const GradeOptions& options);
+
+/// Shows the student's values in the results' words, step by step while `left` lasts: each
+/// step's message quotes its first failing check's (at most kValuesPerStep), and no check's own
+/// output quotes any (the step's message is where a student reads them, and a value said twice
+/// would be a second copy of the student's bytes in the results).
+void release_student_values(PartResult& result, int* left) {
+  int own = kValuesPerResults;
+  if (!left) left = &own;
+  int none = 0;
+  for (StepResult& st : result.steps) {
+    st.message = release_values(st.message, left);
+    for (CheckResult& c : st.checks) c.output = release_values(c.output, &none);
+  }
+}
 }  // namespace
 
 PartResult grade_part(const Manifest& manifest, int part, const GradeOptions& options) {
@@ -735,6 +755,7 @@ PartResult grade_part(const Manifest& manifest, int part, const GradeOptions& op
   }
   charge_steps_at_fault(*spec, result.steps);
   compare_with_gradescope(manifest, result, options);
+  release_student_values(result, options.quote_budget);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

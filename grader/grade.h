@@ -106,6 +106,9 @@ struct GradeOptions {
   /// student's output a message may quote: a line equal to one of the handout's own stub
   /// messages. Nothing else the student's code prints reaches the results.
   std::set<std::string> stub_messages;
+  /// How many of the student's values (grader/student_values.h) the results of this grading may
+  /// still quote: one count for every part a results file holds. Null: kValuesPerResults a part.
+  int* quote_budget = nullptr;
 };
 
 /// Every step of `part`. Never throws for a student's failure: a crash, a hang or garbage is
@@ -130,7 +133,9 @@ std::string render_rests_on_line(const PartSpec& spec, const RenderCheck& check,
 /// options.isolated: the complete solution stands in for them).
 EarlierParts earlier_parts(const Manifest& manifest, int part, const GradeOptions& options);
 
-/// Renders one check as the grader does and compares it with its reference.
+/// Renders one check as the grader does and compares it with its reference. The numbers of its
+/// output that the student's render decided are marked (mark_values, grader/student_values.h):
+/// release_values shows them.
 CheckResult grade_render(const Manifest& manifest, const RenderCheck& check,
                          const GradeOptions& options);
 
