@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include "framework/text/text_file.h"
+#include "grader/build_errors.h"
 #include "grader/bundle.h"
 #include "grader/grade.h"
 #include "grader/handout.h"
@@ -189,24 +190,23 @@ BuildOutcome student_build(int part, const AutogradeLayout& L, const Sandbox& sa
   }
   sandbox.finish(scratch);
   if (!c.ok()) {
-    // Paths as the student knows them: relative to the project.
-    std::string text = excerpt(c.output), prefix = L.project.string() + "/";
-    for (size_t at; (at = text.find(prefix)) != std::string::npos;) text.erase(at, prefix.size());
-    r.output = "your code did not build (the build " + c.describe() + "):\n" + text;
+    // Where its first errors are and what kind, never the compiler's words (they quote the code).
+    r.output = "your code did not build (the build " + c.describe() + "):\n" +
+               build_errors(c.output, L.project.string());
     return r;
   }
   // The link, as the grader: only objects, never a compile.
   const std::string programs = "probes_part" + std::to_string(part);
   ChildResult plan = run_child({"ninja", "-C", L.build.string(), "-n", programs}, 120.0);
   if (!plan.ok() || plan.output.find("Building C") != std::string::npos) {
-    r.output = "the grader would have had to compile code to link your part (it refuses to): " +
-               (plan.ok() ? excerpt(plan.output, 5) : plan.describe());
+    r.output = "the grader would have had to compile code to link your part (it refuses to)";
     return r;
   }
   ChildResult link = run_child({"cmake", "--build", L.build.string(), "--target", programs, "-j",
                                 std::to_string(std::max(1, jobs))}, timeout);
   if (!link.ok()) {
-    r.output = "your part's objects did not link (" + link.describe() + "):\n" + excerpt(link.output);
+    r.output = "your part's objects did not link (" + link.describe() + "):\n" +
+               build_errors(link.output, L.project.string());
     return r;
   }
   lock_secret(L, part_programs(L, part));
@@ -374,7 +374,9 @@ int autograde(const std::string& root, const std::vector<int>& parts,
           step.step = st.step;
           step.name = st.full_name();
           step.max_score = st.points;
-          step.message = "not graded: " + built.output;
+          // Once, in the results' output: the same lines under every step would say no more.
+          step.message = "not graded: part " + std::to_string(spec.part) +
+                         " did not build (the results' output says where)";
           r.steps.push_back(step);
         }
         all.push_back(r);

@@ -23,6 +23,7 @@
 #include "framework/text/text_file.h"
 #include "grader/process/child_process.h"
 #include "framework/stats/variance_consistency.h"
+#include "grader/build_errors.h"
 #include "grader/compare.h"
 #include "grader/judged_tests.h"
 #include "grader/reference_mean.h"
@@ -698,7 +699,7 @@ PartResult grade_part(const Manifest& manifest, int part, const GradeOptions& op
     result.built = c.ok();
     if (!result.built)
       result.build_output = "part " + std::to_string(part) + " does not build (" + c.describe() +
-                            "):\n" + relative_to(output_excerpt(c.output), options.source_dir);
+                            "):\n" + build_errors(c.output, options.source_dir);
   }
   if (!result.built) {
     for (const StepSpec& st : spec->steps) {
@@ -707,7 +708,7 @@ PartResult grade_part(const Manifest& manifest, int part, const GradeOptions& op
       r.step = st.step;
       r.name = st.full_name();
       r.max_score = st.points;
-      r.message = "not graded: " + result.build_output;
+      r.message = "not graded: part " + std::to_string(part) + " does not build (above)";
       result.steps.push_back(r);
     }
     return result;
