@@ -33,6 +33,9 @@ namespace fs = std::filesystem;
 namespace pt::grader {
 namespace {
 
+// What of a grader's error the results quote (the rest goes to the log).
+constexpr size_t kGraderErrorChars = 300;
+
 void write_file(const fs::path& path, const std::string& text, fs::perms mode) {
   fs::create_directories(path.parent_path());
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
@@ -406,9 +409,14 @@ int autograde(const std::string& root, const std::vector<int>& parts,
     results["extra_data"]["missing"] = intake.missing;
     results["extra_data"]["refused"] = intake.refused;
   } catch (const std::exception& e) {
+    // The grader's words, but they may name what a student's process left (a file's name): cut
+    // short, they are the only text of these results (docs/grading.md, the bound).
+    std::cerr << "autograde: " << e.what() << "\n";
+    std::string why = e.what();
+    if (why.size() > kGraderErrorChars) why = why.substr(0, kGraderErrorChars) + " [...]";
     results = {{"score", 0},
-               {"output", std::string("The autograder could not grade this submission: ") +
-                              e.what() + ". This is not a verdict on your code: please tell the "
+               {"output", std::string("The autograder could not grade this submission: ") + why +
+                              ". This is not a verdict on your code: please tell the "
                               "course staff."},
                {"tests", nlohmann::json::array()}};
   }

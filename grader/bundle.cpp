@@ -62,11 +62,13 @@ std::string SubmissionIntake::summary() const {
   for (const std::string& m : missing)
     s += "\n  missing: " + m + " (graded as the handout's unimplemented stub)";
   for (const std::string& r : refused) s += "\n  not used: " + r + " (graded as the handout's stub)";
-  if (!ignored.empty()) {
-    s += "\n  not graded (only the files above are): ";
-    for (size_t i = 0; i < ignored.size() && i < 10; ++i) s += (i ? ", " : "") + ignored[i];
-    if (ignored.size() > 10) s += ", and " + std::to_string(ignored.size() - 10) + " more";
-  }
+  // Counted, never named: a submission's own names are text the student chose
+  // (docs/grading.md, "What reaches the student").
+  if (!ignored.empty())
+    s += "\n  not graded: " +
+         (ignored.size() > 99 ? std::string("more than 99") : std::to_string(ignored.size())) +
+         " other file" + (ignored.size() == 1 ? "" : "s") +
+         " of the submission (only the files above are graded)";
   return s;
 }
 
@@ -101,18 +103,17 @@ SubmissionIntake take_submission(const std::vector<std::string>& files,
     if (found.empty()) {
       intake.missing.push_back(rel);
     } else if (found.size() > 1) {
-      why = rel + ": the submission has " + std::to_string(found.size()) + " files that could be it (" +
-            found[0] + ", " + found[1] + ")";
+      why = rel + ": the submission has more than one file that could be it";
     } else {
       fs::path from = fs::path(submission_dir) / found[0];
       struct stat st;
       used[found[0]] = true;
       if (lstat(from.c_str(), &st) != 0 || S_ISLNK(st.st_mode)) {
-        why = found[0] + ": a symbolic link, not a file";
+        why = rel + ": a symbolic link, not a file";
       } else if (!S_ISREG(st.st_mode)) {
-        why = found[0] + ": not a regular file";
+        why = rel + ": not a regular file";
       } else if (uintmax_t(st.st_size) > kMaxStudentFile) {
-        why = found[0] + ": larger than 1 MB";
+        why = rel + ": larger than 1 MB";
       } else {
         copy_as_ours(from, target);
         intake.taken.push_back(rel);

@@ -16,8 +16,10 @@ std::vector<std::string> student_files(const std::string& source_dir);
 struct SubmissionIntake {
   std::vector<std::string> taken;    ///< student files found and copied
   std::vector<std::string> missing;  ///< not in the submission: graded as the handout's stub
-  std::vector<std::string> refused;  ///< "path: why" (a link, a file too big, two candidates)
-  std::vector<std::string> ignored;  ///< other files in the submission, not graded
+  /// "file: why" (a link, a file too big, two candidates), the file by the project's name: the
+  /// submission's own paths are the student's text and never reach the results
+  std::vector<std::string> refused;
+  std::vector<std::string> ignored;  ///< other files in the submission, not graded (counted only)
   /// What a student reads at the top of the results: what was graded, what was missing.
   std::string summary() const;
 };
