@@ -51,7 +51,8 @@ std::string project_file(const std::string& path, const fs::path& project) {
 
 std::string build_errors(const std::string& output, const std::string& project) {
   // "FILE:LINE:COLUMN: error: WHAT" and "fatal error:" from the compiler; the linker's
-  // "undefined reference" and "multiple definition" lines have no line of their own.
+  // "undefined reference" and "multiple definition" lines, and a program's own "PROGRAM: fatal
+  // error:", have no line of their own.
   static const std::regex located("^(.+?):([0-9]+):([0-9]+): (fatal )?error: (.*)$");
   std::vector<std::string> shown;
   int errors = 0;
@@ -69,6 +70,13 @@ std::string build_errors(const std::string& output, const std::string& project) 
     } else if (line.find("undefined reference") != std::string::npos ||
                line.find("multiple definition") != std::string::npos) {
       where = "the link";
+      said = line;
+    } else if ((line.find(": error: ") != std::string::npos ||
+                line.find(": fatal error: ") != std::string::npos) &&
+               line.find("ld returned") == std::string::npos) {
+      // An error of no line ("cc1plus: fatal error: FILE: Permission denied" for an #include
+      // found by __has_include but not readable).
+      where = "the compiler";
       said = line;
     } else {
       continue;

@@ -60,12 +60,24 @@ TEST(GraderBuildErrors, EachErrorIsAFileOfTheProjectALineAndAKind) {
   EXPECT_EQ(said.find(kPayload), std::string::npos) << said;
 }
 
+// An #include that __has_include found but the student's user may not read: the compiler's
+// error has no line, and its kind is what the bundle's read_solution cheater is told.
+TEST(GraderBuildErrors, AnErrorOfNoLineIsTheCompilersAndNamesNoFile) {
+  const std::string said = build_errors(
+      "cc1plus: fatal error: ../../" + kPayload + "/sphere_intersect.cpp: Permission denied\n"
+      "compilation terminated.\n", "/nowhere");
+  EXPECT_NE(said.find("the compiler: an #include of a file it may not read (Permission denied)"),
+            std::string::npos) << said;
+  EXPECT_EQ(said.find(kPayload), std::string::npos) << said;
+}
+
 TEST(GraderBuildErrors, ALinkErrorNamesNoSymbol) {
   const std::string said =
       build_errors("/usr/bin/ld: x.o: in function `main':\nx.cpp:(.text+0x5): undefined reference "
                    "to `" + kPayload + "()'\ncollect2: error: ld returned 1 exit status\n", "/nowhere");
   EXPECT_NE(said.find("the link: a function declared and called but never defined"), std::string::npos) << said;
   EXPECT_EQ(said.find(kPayload), std::string::npos) << said;
+  EXPECT_EQ(said.find("errors in all"), std::string::npos) << "collect2's line is no error of its own: " << said;
 }
 
 }  // namespace
