@@ -575,7 +575,15 @@ CheckResult grade_render(const Manifest& manifest, const RenderCheck& check,
   if (!c.ok()) {
     // Nothing of its own output but the stubs' lines (r.todo): the command shows the rest to
     // whoever runs it. Its exit status is the student's value.
-    r.output = "the render " + mark_values(c.describe()) + ": " + command_line(argv);
+    // In the sandbox the command names the grader's private folders (and its process ids):
+    // the student is shown what to run, the flags and the scene's name.
+    std::vector<std::string> shown = argv;
+    if (options.sandbox) {
+      shown.front() = "pathtracer";
+      shown[shown.size() - 2] = out.filename().string();
+      shown.back() = scene.filename().string();
+    }
+    r.output = "the render " + mark_values(c.describe()) + ": " + command_line(shown);
     return r;
   }
   // A stub of this part that ran is not the student's answer. No stub gives a right image (that
