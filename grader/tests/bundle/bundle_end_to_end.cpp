@@ -4,7 +4,9 @@
 // solution (full marks), the handout (0, no crash), a submission that does not compile, and the
 // cheaters of grader/tests/cheaters, two at a time where they replace different files (no step
 // scores more than with the honest stubs of those files, every step that does not rest on them
-// keeps its full marks). Each case prints its score and time: the figures of the bundle's report.
+// keeps its full marks), and a cheater that smuggles a payload out by every channel it has, graded
+// with two payloads (the results differ in at most 512 characters). Each case prints its score
+// and time: the figures of the bundle's report.
 // Not a test of the suite (it takes most of half an hour): tools/bundle_check runs it.
 #include <unistd.h>
 
@@ -14,6 +16,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <random>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -31,6 +34,7 @@
 #include "grader/report.h"
 #include "grader/sandbox.h"
 #include "grader/student_traces.h"
+#include "grader/tests/results_difference.h"
 
 namespace fs = std::filesystem;
 
@@ -712,6 +716,88 @@ struct Flood {
     EXPECT_LE(t.value("output", "").size(), 2100u) << t.value("name", "");
     for (const nlohmann::json& c : t["extra_data"].value("checks", nlohmann::json::array()))
       EXPECT_LE(c.value("output", "").size(), 1300u) << c.value("name", "");
+  }
+}
+
+/// `bytes` random bytes from `seed`, in hex.
+std::string random_hex(size_t bytes, unsigned seed) {
+  std::mt19937 gen(seed);
+  std::string hex;
+  const char* digits = "0123456789abcdef";
+  for (size_t i = 0; i < bytes; ++i) {
+    const unsigned b = gen() & 0xffu;
+    hex += digits[b >> 4];
+    hex += digits[b & 15];
+  }
+  return hex;
+}
+
+/// The cheater smuggle.cc with `hex` for its payload, in a submission that also names a folder
+/// and an extra file by the payload.
+Files smuggling_submission(const Files& solution, const std::string& hex) {
+  std::string cheater = read_text_file(kSource / "grader/tests/cheaters/smuggle.cc");
+  const std::regex payload("\"PAYLOAD:[0-9a-f]*\"");
+  EXPECT_TRUE(std::regex_search(cheater, payload)) << "smuggle.cc has no payload to replace";
+  cheater = std::regex_replace(cheater, payload, "\"PAYLOAD:" + hex + "\"");
+  Files files = solution;
+  files.erase(kSphere);
+  files[hex.substr(0, 64) + "/" + kSphere] = cheater;
+  files["notes-" + hex.substr(64, 128) + ".txt"] = hex;
+  return files;
+}
+
+/// A submission whose sphere does not compile, made to carry `hex` out in the compiler's words:
+/// an identifier, an #error, a static_assert, and a #line naming a file and a line of its own.
+Files smuggling_build(const Files& solution, const std::string& hex) {
+  Files files = solution;
+  files[kSphere] = "int x_" + hex.substr(0, 200) + " = y_" + hex.substr(200, 200) + ";\n" +
+                   "static_assert(false, \"" + hex.substr(400, 200) + "\");\n" +
+                   "#error " + hex.substr(600, 200) + "\n" +
+                   "#line " + std::to_string(1 + std::stoul(hex.substr(800, 7), nullptr, 16)) +
+                   " \"" + hex.substr(810, 100) + ".cpp\"\n" +
+                   "int z_" + hex.substr(910, 200) + " = w;\n";
+  return files;
+}
+
+/// Every run of 12 payload digits that appears whole in the results.
+std::vector<std::string> quoted_payload(const nlohmann::json& r, const std::string& hex) {
+  const std::string all = r.dump();
+  std::vector<std::string> found;
+  for (size_t at = 0; at + 12 <= hex.size(); at += 12)
+    if (all.find(hex.substr(at, 12)) != std::string::npos) found.push_back(hex.substr(at, 12));
+  return found;
+}
+
+// The bound: one results.json carries at most 512 characters the student chose. A cheater that
+// puts 4 KB of payload into every channel it has (its values, a stub-like line, its time, the
+// signal it dies of and the status it exits with, a folder and a file named by it; then, in a
+// second pair, the compiler's words) is graded twice with two random payloads, as Gradescope
+// grades (no quoting of student lines); every character in which the two results differ is the
+// payload's (or chance's), and none of its text appears whole.
+TEST_F(GraderBundle, AMaximisingCheaterCarriesAtMost512CharactersOut) {
+  const std::string a = random_hex(4096, 1), b = random_hex(4096, 2);
+  for (const bool build : {false, true}) {
+    const Files& solution = bundle_->solution();
+    std::vector<nlohmann::json> results;
+    for (const std::string& hex : {a, b}) {
+      double seconds = 0.0;
+      results.push_back(bundle_->grade(build ? smuggling_build(solution, hex)
+                                             : smuggling_submission(solution, hex),
+                                       "1", &seconds, {kCheckCap}));
+      EXPECT_EQ(validate_gradescope(results.back()), "");
+      // Graded (not the grader's error), and graded as the channel needs: built, or not.
+      EXPECT_EQ(results.back().value("tests", nlohmann::json::array()).size(), 5u)
+          << outputs(results.back());
+      EXPECT_EQ(results.back().dump().find("did not build") != std::string::npos, build)
+          << outputs(results.back());
+      EXPECT_EQ(quoted_payload(results.back(), hex), std::vector<std::string>())
+          << outputs(results.back());
+    }
+    const size_t chosen = testing::differing_characters(results[0], results[1]);
+    std::printf("a cheater carrying its payload out %s: %zu characters of results.json differ "
+                "between two payloads (bound 512)\n",
+                build ? "in a failed build" : "at run time", chosen);
+    EXPECT_LE(chosen, 512u) << outputs(results[0]) << "\n" << outputs(results[1]);
   }
 }
 
