@@ -11,12 +11,13 @@ namespace pt {
 
 /// Step 3 (triangle) and step 5 (watertight).
 /// Whether `ray` meets triangle (p0, p1, p2) at some ray.tmin < t < ray.tmax; on a hit, fills
-/// *hit with t and the barycentric coordinates (b0 for p0). Watertight: a ray through an edge or a
-/// vertex shared by two triangles hits at least one of them, whatever the rounding (Woop, Benthin
-/// and Wald 2013). Both sides of the triangle count. A triangle with two equal corners is never hit;
-/// one whose corners are (nearly) collinear only by a ray within rounding error of its line.
-/// A hit is only reported where t exceeds its own rounding error bound (pbrt-v4, 6.8.7), so a ray
-/// cannot hit the triangle it starts on because of rounding alone.
+/// *hit with t and the barycentric coordinates (b0 for p0; the three add up to 1). Watertight: a
+/// ray through an edge or a vertex shared by two triangles hits at least one of them, whatever the
+/// rounding (Woop, Benthin and Wald 2013), and an edge function that is exactly zero in float is
+/// recomputed in double. Both sides of the triangle count. A triangle with two equal corners is
+/// never hit. A hit is only reported where t exceeds its own rounding error bound (pbrt-v4,
+/// 6.8.7), so a ray cannot hit the triangle it starts on because of rounding alone; no fixed
+/// epsilon on the determinant or on t.
 bool intersect_triangle(const Ray& ray, const glm::vec3& p0, const glm::vec3& p1,
                         const glm::vec3& p2, TriangleHit* hit);
 

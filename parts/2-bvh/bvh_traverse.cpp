@@ -50,11 +50,11 @@ void Bvh::traverse_nearest(NearestState* state) const {
   // END SOLUTION
   // STUDENT: traverse_nearest walks the tree so that every leaf that may hold a hit nearer than
   // the best so far goes through intersect_leaf(node, &st), which keeps the best hit and shrinks
-  // st.cull.tmax; use
-  // st.cull.tmax as the far end of your box tests. What must hold (docs/handout/part2.md step
-  // 3): brute force's nearest hit on every tree, including ones dozens of levels deep; and few
-  // primitive tests per ray, as a walk that opens nearer boxes first and none that start beyond
-  // st.cull.tmax makes. intersect() turns the best hit into a SurfaceHit afterwards.
+  // st.cull.tmax; use st.cull.tmax as the far end of your box tests. What must hold
+  // (docs/handout/part2.md step 3): brute force's nearest hit on every tree, including ones
+  // dozens of levels deep; and few primitive tests per ray, as a walk that opens nearer boxes
+  // first and none that start beyond st.cull.tmax makes. intersect() turns the best hit into a
+  // SurfaceHit afterwards.
   PT_STUDENT_TODO("part 2", "Bvh::traverse_nearest");
   (void)st;  // no hit: the tree finds nothing until you write its walk
 }

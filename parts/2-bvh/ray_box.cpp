@@ -34,12 +34,14 @@ bool intersect_box(const Bounds3& box, const BoxRay& ray, float tmax, float* t_e
   return t0 <= t1;
   // END SOLUTION
   // STUDENT: return whether the ray meets the box at some distance in [ray.tmin, tmax], and on
-  // a hit set *t_entry to the distance at which it enters, or less: the traversal visits nearer
-  // boxes first by it and skips those that start beyond its best hit. What must hold (each is a
-  // check, docs/handout/part2.md step 1): a box the ray truly meets is never rejected because of
-  // rounding, and *t_entry is never beyond the true entry; a ray along a face, in a flat box or
-  // with a zero direction component counts where it touches the box; a box before tmin or beyond
-  // tmax, or well beside the ray, is missed.
+  // a hit set *t_entry to the distance at which it enters (tmin if it starts inside), or less by
+  // rounding: the traversal visits nearer boxes first by it and skips those that start beyond
+  // its best hit. What must hold (each is a check, docs/handout/part2.md step 1): a box the ray
+  // truly meets is never rejected because of rounding, and *t_entry is never beyond the true
+  // entry; each slab's near and far planes follow the sign of the direction's component (-0
+  // counts as negative); a ray along a face, in a flat box or with a zero direction component
+  // counts where it touches the box; a box before tmin or beyond tmax, or well beside the ray, is
+  // missed.
   PT_STUDENT_TODO("part 2", "intersect_box");
   (void)box, (void)ray, (void)tmax;
   *t_entry = 0.0f;

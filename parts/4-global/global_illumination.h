@@ -20,8 +20,10 @@ glm::vec3 direct_radiance(const LightingContext& ctx, const ShadingPoint& sp, Rn
 /// Light leaving `sp` towards the viewer after at least one bounce, where `sp` is the path's
 /// vertex number `depth` (the camera ray's hit is 1): the direct light there (which took
 /// `depth` bounces), plus, while depth < ctx.max_depth, what a BSDF-sampled ray brings back
-/// from the next vertex, with Russian roulette from the second bounce on. After a specular
-/// vertex the next surface's emission counts too, since no light sample could reach it.
+/// from the next vertex (weighted by f·|cosθ|/pdf), with Russian roulette from the second bounce
+/// on (a path that survives is divided by its chance to go on). After a specular vertex the next
+/// surface's emission counts too, since no light sample could reach it; so a specular vertex at
+/// depth = ctx.max_depth still follows its one direction, for that emission alone.
 /// With ctx.only_bounce = K ≥ 0, only light that took exactly K bounces is kept.
 glm::vec3 at_least_one_bounce_radiance(const LightingContext& ctx, const ShadingPoint& sp,
                                        int depth, Rng& rng);

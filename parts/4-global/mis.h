@@ -19,9 +19,10 @@ float power_heuristic(int n_a, float pdf_a, int n_b, float pdf_b);
 /// and ctx.light_samples BSDF samples, each weighted by the power heuristic, so that whichever
 /// strategy suits the light (a big dim light for the BSDF, a small bright one for the light)
 /// dominates. A BSDF sample counts when its ray reaches a light the LightSet can also sample
-/// (an emitter, an area light's panel, or the environment), with the radiance and density the
-/// LightSet gives for the very point it reached; area lights without a panel cannot be hit, so
-/// their light samples keep weight 1.
+/// (an emitter, an area light's rectangle as its light samples are drawn, or the environment),
+/// with the radiance and density the LightSet gives for the very point it reached. A light no ray
+/// can hit (can_be_hit() false: a point, spot or directional light, or an area light without a
+/// panel) keeps weight 1 for its samples.
 glm::vec3 estimate_direct_mis(const LightingContext& ctx, const ShadingPoint& sp, Rng& rng);
 
 }  // namespace pt

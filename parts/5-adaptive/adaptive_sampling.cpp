@@ -16,7 +16,8 @@ bool pixel_converged(const IlluminanceStats& decision, long estimate_count, floa
   // STUDENT: σ and μ come from the decision samples (decision.variance(), decision.mean), but
   // the half-width is that of the estimate you report: 1.96·σ/√n_E, with n_E = estimate_count
   // (the samples in the estimate, not the decision samples nor every sample). Converged when
-  // it is at most tolerance·μ; with fewer than two decision samples, not converged.
+  // it is at most tolerance·μ; with fewer than two decision samples, or no estimate sample, not
+  // converged; with every decision sample equal (σ = 0), converged, even a black pixel.
   PT_STUDENT_TODO("part 5", "pixel_converged");
   (void)decision, (void)estimate_count, (void)tolerance;
   return false;

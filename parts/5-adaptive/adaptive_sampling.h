@@ -33,8 +33,9 @@ using PixelSampleFn = std::function<glm::vec3()>;
 /// reports, I = 1.96·σ/√n_E, is at most tolerance·μ, where σ and μ come from the decision
 /// samples' illuminances (`decision`) and n_E = `estimate_count` is the number of samples in
 /// the estimate (under the course's rule every sample is both, so the two counts are equal).
-/// Fewer than two decision samples say nothing about σ: not converged. A pixel whose decision
-/// samples are all equal (σ = 0) has converged, even a black one.
+/// Fewer than two decision samples say nothing about σ, and no estimate sample leaves nothing to
+/// report: not converged. A pixel whose decision samples are all equal (σ = 0) has converged,
+/// even a black one.
 bool pixel_converged(const IlluminanceStats& decision, long estimate_count, float tolerance);
 
 /// The stopping rule the loop asks after each batch, with pixel_converged's arguments: the
