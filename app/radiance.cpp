@@ -4,6 +4,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 #include "framework/geometry/counting_ray_query.h"
 #include "framework/lights/sampled_lights.h"
@@ -25,6 +26,29 @@ std::vector<MaterialKind> rendered_material_kinds(const RenderSettings& settings
 }
 
 namespace {
+
+#if defined(PT_HAVE_FAST_LIGHTS) && defined(PT_HAVE_WIDE_BVH)
+// The wide tree as a camera sample's estimate asks it, with the shadow rays its light batch made
+// answered from the packet the batch traces them in (LightBatches::occluded_answer); every other
+// query, and a shadow ray the batch did not make, the tree answers alone.
+class PacketShadowQuery final : public RayQuery {
+ public:
+  PacketShadowQuery(const WideBvh& bvh, LightBatches& batches) : bvh_(bvh), batches_(batches) {}
+  bool intersect(const Ray& ray, SurfaceHit* hit) const override { return bvh_.intersect(ray, hit); }
+  bool occluded(const Ray& ray) const override {
+    bool blocked;
+    if (batches_.occluded_answer(ray, &blocked)) return blocked;
+    return bvh_.occluded(ray);
+  }
+  static unsigned trace(const void* bvh, const Ray* rays, unsigned offered, unsigned* answered) {
+    return static_cast<const WideBvh*>(bvh)->occluded_together(rays, offered, answered);
+  }
+
+ private:
+  const WideBvh& bvh_;
+  LightBatches& batches_;
+};
+#endif
 
 // Every ray counts: each camera sample traces through a counter of its own, made on the stack
 // around the render's query, and adds its count to the tile's context. Made for the query's own
@@ -53,6 +77,20 @@ TracedRadianceFn counted_radiance(const RenderSettings& settings, const Scene& s
 #ifdef PT_HAVE_FAST_LIGHTS
   if (layer == LightLayer::fast) {
     const int light_samples = std::max(1, settings.light_samples);
+#ifdef PT_HAVE_WIDE_BVH
+    if constexpr (std::is_same_v<Query, WideBvh>) {
+      return [integrator, &query, light_samples](const Ray& ray, Rng& rng, TraceContext& context) {
+        // As below, and the batch's shadow rays traced together, a packet a shading point.
+        LightBatches batches(&rng, light_samples, ShadowRayTracer{&query, &PacketShadowQuery::trace});
+        const FasterLightSampling::Installed installed(batches);
+        const PacketShadowQuery packets(query, batches);
+        const LocalCountingRayQuery<PacketShadowQuery> counting(packets);
+        const glm::vec3 L = integrator->radiance(ray, rng, counting);
+        context.rays.add(counting.count());
+        return L;
+      };
+    }
+#endif
     return [trace, light_samples](const Ray& ray, Rng& rng, TraceContext& context) {
       // The camera sample's light samples and shadow rays in lanes and batches, foreseen from the
       // generator its estimate draws from: the framework's definitions' answers, to the bit.

@@ -17,6 +17,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "app/accel/ray_packet8.h"
 #include "app/accel/sheared_triangle.h"
 #include "app/accel/surface_hit_lanes.h"
 #include "parts/1-raygen/sphere_intersect.h"
@@ -714,6 +715,64 @@ bool WideBvh::nearest(const Ray& ray, NearestHit* hit) const {
   return true;
 }
 
+// Whether an entry of the leaf of `count` entries from packet `first` blocks `ray`: the leaf
+// test of every any-hit walk, single ray or packet, so both answer each ray alike. The shear is
+// made in `storage` at the first packet of triangles and kept in *sheared4 for the ray's next
+// leaves.
+[[gnu::always_inline]] inline bool WideBvh::leaf_occludes(const Ray& ray, uint32_t first,
+                                                          uint32_t count,
+                                                          const ShearedRay4** sheared4,
+                                                          unsigned char* storage) const {
+  // Whether a lane a test of packets from `first_packet` handed back (or a sphere's lane)
+  // occludes the ray. A triangle's lane is only handed back by a lane test, which made the
+  // shear.
+  auto retest_occludes = [&](unsigned retest, uint32_t first_packet) {
+    for (unsigned lanes = retest; lanes; lanes &= lanes - 1) {
+      const uint32_t k = uint32_t(__builtin_ctz(lanes));
+      const uint32_t p = first_packet + k / Triangle4::kLanes;
+      const uint32_t lane = k % Triangle4::kLanes;
+      if (packets_[p].triangles >> lane & 1u) {
+        TriangleHit th;
+        const Corners c = corners(p, lane);
+        if (intersect_sheared_triangle((*sheared4)->r, ray.tmax, c.p0, c.p1, c.p2, &th))
+          return true;
+      } else if (primitive_occludes(scene_, packets_[p].prim[lane], ray)) {
+        return true;
+      }
+    }
+    return false;
+  };
+  const uint32_t end = first + (count + Triangle4::kLanes - 1) / Triangle4::kLanes;
+  for (uint32_t p = first; p < end;) {
+    if (packets_[p].triangles == 0) {
+      // Spheres only (a sphere's leaf of its own, as in a room with balls in it): straight
+      // to Part 1's sphere test, with no shear to make and no lane test, whose every lane
+      // would come back as a retest.
+      if (retest_occludes(packets_[p].entries, p)) return true;
+      p += 1;
+      continue;
+    }
+    if (!*sheared4) *sheared4 = new (storage) ShearedRay4(ray);
+    if (kPairPackets && p + 1 < end) {
+      const LeafPacket &a = packets_[p], &b = packets_[p + 1];
+      Triangle8Hits h;
+      triangle8_intersect(a.tri, b.tri, **sheared4, ray.tmax, a.entries | unsigned(b.entries) << 4,
+                          &h);
+      if (h.hit & (a.triangles | unsigned(b.triangles) << 4)) return true;
+      if (retest_occludes(h.retest, p)) return true;
+      p += 2;
+    } else {
+      const LeafPacket& a = packets_[p];
+      Triangle4Hits h;
+      triangle4_intersect(a.tri, **sheared4, ray.tmax, a.entries, &h);
+      if (h.hit & a.triangles) return true;
+      if (retest_occludes(h.retest, p)) return true;
+      p += 1;
+    }
+  }
+  return false;
+}
+
 bool WideBvh::occluded(const Ray& ray) const {
   if (nodes_.empty() || !traceable(ray)) return false;
   // The root's test first, in a frame of its own: in a room most shadow rays enter none of its
@@ -723,12 +782,12 @@ bool WideBvh::occluded(const Ray& ray) const {
   const Box4Ray box_ray(ray);
   alignas(32) float t_entry[WideNode::kWidth];
   const unsigned entered = intersect_node(nodes_[0], box_ray, ray.tmax, t_entry);
-  return entered != 0 && occluded_below_root(ray, box_ray, entered);
+  return entered != 0 && occluded_below(ray, box_ray, 0, entered);
 }
 
 // Out of line, so that the root's test above keeps its small frame.
-[[gnu::noinline]] bool WideBvh::occluded_below_root(const Ray& ray, const Box4Ray& box_ray,
-                                                    unsigned entered) const {
+[[gnu::noinline]] bool WideBvh::occluded_below(const Ray& ray, const Box4Ray& box_ray,
+                                               uint32_t from, unsigned entered) const {
   // The shear is made at the first packet of triangles the ray reaches: many shadow rays of a
   // room that get this far reach none (they cross only a sphere's box), and for them its setup
   // (a division, a lane of each value) would be wasted. (Raw storage, not
@@ -739,7 +798,7 @@ bool WideBvh::occluded(const Ray& ray) const {
   // Any occluder will do: no distances kept, no sorting.
   StackEntry stack[kStackSize];
   int top = 0;
-  const WideNode* node = &nodes_[0];
+  const WideNode* node = &nodes_[from];
   unsigned mask = entered;
   while (true) {
     // The entered children of `node`, pushed (in the order of their slots).
@@ -756,53 +815,7 @@ bool WideBvh::occluded(const Ray& ray) const {
     if (top == 0) return false;
     const StackEntry e = stack[--top];
     if (e.count > 0) {
-      // Whether a lane a test of packets from `first_packet` handed back (or a sphere's lane)
-      // occludes the ray. A triangle's lane is only handed back by a lane test, which made the
-      // shear.
-      auto retest_occludes = [&](unsigned retest, uint32_t first_packet) {
-        for (unsigned lanes = retest; lanes; lanes &= lanes - 1) {
-          const uint32_t k = uint32_t(__builtin_ctz(lanes));
-          const uint32_t p = first_packet + k / Triangle4::kLanes;
-          const uint32_t lane = k % Triangle4::kLanes;
-          if (packets_[p].triangles >> lane & 1u) {
-            TriangleHit th;
-            const Corners c = corners(p, lane);
-            if (intersect_sheared_triangle(sheared4->r, ray.tmax, c.p0, c.p1, c.p2, &th))
-              return true;
-          } else if (primitive_occludes(scene_, packets_[p].prim[lane], ray)) {
-            return true;
-          }
-        }
-        return false;
-      };
-      const uint32_t end = e.child + (e.count + Triangle4::kLanes - 1) / Triangle4::kLanes;
-      for (uint32_t p = e.child; p < end;) {
-        if (packets_[p].triangles == 0) {
-          // Spheres only (a sphere's leaf of its own, as in a room with balls in it): straight
-          // to Part 1's sphere test, with no shear to make and no lane test, whose every lane
-          // would come back as a retest.
-          if (retest_occludes(packets_[p].entries, p)) return true;
-          p += 1;
-          continue;
-        }
-        if (!sheared4) sheared4 = new (shear_storage) ShearedRay4(ray);
-        if (kPairPackets && p + 1 < end) {
-          const LeafPacket &a = packets_[p], &b = packets_[p + 1];
-          Triangle8Hits h;
-          triangle8_intersect(a.tri, b.tri, *sheared4, ray.tmax, a.entries | unsigned(b.entries) << 4,
-                              &h);
-          if (h.hit & (a.triangles | unsigned(b.triangles) << 4)) return true;
-          if (retest_occludes(h.retest, p)) return true;
-          p += 2;
-        } else {
-          const LeafPacket& a = packets_[p];
-          Triangle4Hits h;
-          triangle4_intersect(a.tri, *sheared4, ray.tmax, a.entries, &h);
-          if (h.hit & a.triangles) return true;
-          if (retest_occludes(h.retest, p)) return true;
-          p += 1;
-        }
-      }
+      if (leaf_occludes(ray, e.child, e.count, &sheared4, shear_storage)) return true;
       continue;
     }
     node = &nodes_[e.child];
@@ -810,5 +823,108 @@ bool WideBvh::occluded(const Ray& ray) const {
     mask = intersect_node(*node, box_ray, ray.tmax, t_entry);
   }
 }
+
+unsigned WideBvh::occluded_together(const Ray* rays, unsigned offered, unsigned* answered) const {
+  const int first = __builtin_ctz(offered);
+  unsigned blocked = 0, done = 0;
+#if PT_ACCEL_PACKETS
+  if (!nodes_.empty()) {
+    const RayPacket8 packet(rays, offered);
+    if (packet.lanes & (packet.lanes - 1)) {
+      blocked = occluded_packet(rays, packet);
+      done = packet.lanes;
+    }
+  }
+#endif
+  // The first ray is always answered: alone, where it cannot go with others (or is not
+  // traceable, which occluded() answers).
+  if (!(done >> first & 1u)) {
+    blocked |= unsigned(occluded(rays[first])) << first;
+    done |= 1u << first;
+  }
+  *answered = done;
+  return blocked;
+}
+
+#if PT_ACCEL_PACKETS
+unsigned WideBvh::occluded_packet(const Ray* rays, const RayPacket8& packet) const {
+  const unsigned group = packet.lanes;
+  // Each ray's shear, made at the first packet of triangles it reaches (as occluded() does).
+  alignas(ShearedRay4) unsigned char shear_storage[8][sizeof(ShearedRay4)];
+  const ShearedRay4* sheared[8] = {};
+  // A node or leaf still to visit, and the rays that enter it.
+  struct Entry {
+    uint32_t child;
+    uint32_t count;  ///< 0: `child` is a node; else a leaf of `count` entries from `child`
+    unsigned rays;
+  };
+  Entry stack[kStackSize];
+  int top = 0;
+  stack[top++] = {0, 0, group};
+  unsigned blocked = 0;  // rays found occluded, which need nothing more
+  while (top > 0) {
+    const Entry e = stack[--top];
+    const unsigned active = e.rays & ~blocked;
+    if (active == 0) continue;
+    if (e.count > 0) {
+      for (unsigned l = active; l; l &= l - 1) {
+        const int j = __builtin_ctz(l);
+        if (leaf_occludes(rays[j], e.child, e.count, &sheared[j], shear_storage[j]))
+          blocked |= 1u << j;
+      }
+      if (blocked == group) return blocked;
+      continue;
+    }
+    if (__builtin_popcount(active) <= 2) {
+      // One or two rays left in this subtree: each one's own walk, as occluded() makes it, costs
+      // less than the packet's bookkeeping (on CBbunny, a packet kept together down to its last
+      // ray took 0.4 % more of the render's instructions than this, a packet at the root only
+      // 0.7 % more).
+      for (unsigned l = active; l; l &= l - 1) {
+        const int j = __builtin_ctz(l);
+        const Box4Ray box_ray(rays[j]);
+        alignas(32) float t_entry[WideNode::kWidth];
+        const unsigned entered = intersect_node(nodes_[e.child], box_ray, rays[j].tmax, t_entry);
+        if (entered != 0 && occluded_below(rays[j], box_ray, e.child, entered)) blocked |= 1u << j;
+      }
+      if (blocked == group) return blocked;
+      continue;
+    }
+    const WideNode& node = nodes_[e.child];
+    // Which rays enter which children, by each ray's own test, so a ray reaches exactly the
+    // leaves its single walk would. Where several rays are left, one test of the whole packet
+    // first rules out the children none of them enters; then each child it leaves is tested
+    // for all the rays at once, or each ray for all those children, whichever is fewer tests:
+    // never more than the single walks' one test a ray.
+    unsigned child_rays[WideNode::kWidth] = {};
+    const int rays_left = __builtin_popcount(active);
+    const unsigned may = rays_left > 1 ? packet_may_enter8(node.boxes, packet) : 0xFFu;
+    if (may == 0) continue;
+    if (__builtin_popcount(may) < rays_left) {
+      for (unsigned m = may; m; m &= m - 1) {
+        const int k = __builtin_ctz(m);
+        child_rays[k] = rays_entering(node.boxes, k, packet) & active;
+      }
+    } else {
+      for (unsigned l = active; l; l &= l - 1) {
+        const int j = __builtin_ctz(l);
+        for (unsigned m = ray_enters8(node.boxes, j, packet) & may; m; m &= m - 1)
+          child_rays[__builtin_ctz(m)] |= 1u << j;
+      }
+    }
+    for (unsigned m = may; m; m &= m - 1) {
+      const int k = __builtin_ctz(m);
+      if (child_rays[k] == 0) continue;
+      if (node.count[k] > 0)
+        prefetch_lines(&packets_[node.child[k]], leaf_lines(node.count[k]));
+      else
+        prefetch_lines(&nodes_[node.child[k]], int(sizeof(WideNode) / 64));
+      if (top == kStackSize) stack_overflow();
+      stack[top++] = {node.child[k], node.count[k], child_rays[k]};
+    }
+  }
+  return blocked;
+}
+#endif
 
 }  // namespace pt

@@ -9,6 +9,7 @@
 #include <glm/vec3.hpp>
 
 #include "app/accel/box4.h"
+#include "app/accel/ray_packet8.h"
 #include "app/accel/triangle4.h"
 #include "framework/geometry/ray_query.h"
 #include "framework/scene/scene.h"
@@ -95,6 +96,12 @@ class WideBvh final : public RayQuery {
   /// The nearest hit's primitive, t and barycentrics, without its SurfaceHit: the very primitive
   /// and t intersect() reports, for callers (and benchmarks) that need no more.
   bool nearest(const Ray& ray, NearestHit* hit) const;
+  /// occluded(rays[k]) as bit k of the answer, for the first bit k of `offered` (k < 8) and
+  /// those other rays of `offered` that leave its origin (a shading point's shadow rays towards
+  /// one light), which walk the tree together: a node's boxes culled for all of them by one test
+  /// (RayPacket8), each ray then answered by its own box and leaf tests, so every bit is
+  /// occluded()'s. *answered: the rays answered.
+  unsigned occluded_together(const Ray* rays, unsigned offered, unsigned* answered) const;
 
   const WideBvhStats& stats() const { return stats_; }
   const std::vector<WideNode>& nodes() const { return nodes_; }
@@ -138,8 +145,17 @@ class WideBvh final : public RayQuery {
   }
   template <bool kCheckEachCandidate, bool kPrefetchShading>
   void find_nearest(const Ray& ray, Nearest* best) const;
-  /// occluded()'s walk below the root, whose children `entered` the ray enters (not zero).
-  bool occluded_below_root(const Ray& ray, const Box4Ray& box_ray, unsigned entered) const;
+  /// occluded()'s walk below node `from` (the root, or where a packet's walk leaves a ray on its
+  /// own), whose children `entered` the ray enters (not zero).
+  bool occluded_below(const Ray& ray, const Box4Ray& box_ray, uint32_t from, unsigned entered) const;
+#if PT_ACCEL_PACKETS
+  /// occluded_rays' walk of the rays of `packet` (two or more lanes of `rays`).
+  unsigned occluded_packet(const Ray* rays, const RayPacket8& packet) const;
+#endif
+  /// Whether an entry of the leaf of `count` entries from packet `first` blocks `ray`; the ray's
+  /// shear is made in `storage` when first needed and kept in *sheared4.
+  bool leaf_occludes(const Ray& ray, uint32_t first, uint32_t count, const ShearedRay4** sheared4,
+                     unsigned char* storage) const;
 
   const Scene& scene_;
   std::vector<WideNode> nodes_;

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "app/fast/lane_rays.h"
+#include "app/fast/transpose8.h"
 #include "app/fast/vec3_lanes.h"
 #include "framework/math/float_error.h"
 #if PT_SSE2 && defined(__AVX__)
@@ -17,31 +18,6 @@ namespace pt {
 namespace {
 
 #if PT_SSE2 && defined(__AVX__)
-// Rows r[0..8) of an 8 × 8 block of floats become its columns: r[k] then holds lane k's eight
-// values in order (the fields of one sample).
-[[gnu::always_inline]] inline void transpose8(__m256 r[8]) {
-  const __m256 t0 = _mm256_unpacklo_ps(r[0], r[1]), t1 = _mm256_unpackhi_ps(r[0], r[1]);
-  const __m256 t2 = _mm256_unpacklo_ps(r[2], r[3]), t3 = _mm256_unpackhi_ps(r[2], r[3]);
-  const __m256 t4 = _mm256_unpacklo_ps(r[4], r[5]), t5 = _mm256_unpackhi_ps(r[4], r[5]);
-  const __m256 t6 = _mm256_unpacklo_ps(r[6], r[7]), t7 = _mm256_unpackhi_ps(r[6], r[7]);
-  const __m256 s0 = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(1, 0, 1, 0));
-  const __m256 s1 = _mm256_shuffle_ps(t0, t2, _MM_SHUFFLE(3, 2, 3, 2));
-  const __m256 s2 = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(1, 0, 1, 0));
-  const __m256 s3 = _mm256_shuffle_ps(t1, t3, _MM_SHUFFLE(3, 2, 3, 2));
-  const __m256 s4 = _mm256_shuffle_ps(t4, t6, _MM_SHUFFLE(1, 0, 1, 0));
-  const __m256 s5 = _mm256_shuffle_ps(t4, t6, _MM_SHUFFLE(3, 2, 3, 2));
-  const __m256 s6 = _mm256_shuffle_ps(t5, t7, _MM_SHUFFLE(1, 0, 1, 0));
-  const __m256 s7 = _mm256_shuffle_ps(t5, t7, _MM_SHUFFLE(3, 2, 3, 2));
-  r[0] = _mm256_permute2f128_ps(s0, s4, 0x20);
-  r[1] = _mm256_permute2f128_ps(s1, s5, 0x20);
-  r[2] = _mm256_permute2f128_ps(s2, s6, 0x20);
-  r[3] = _mm256_permute2f128_ps(s3, s7, 0x20);
-  r[4] = _mm256_permute2f128_ps(s0, s4, 0x31);
-  r[5] = _mm256_permute2f128_ps(s1, s5, 0x31);
-  r[6] = _mm256_permute2f128_ps(s2, s6, 0x31);
-  r[7] = _mm256_permute2f128_ps(s3, s7, 0x31);
-}
-
 // A quad panel's samples for eight numbers u[0..8) at once, one a lane: every operation of the
 // framework's sample of a quad (light_set.cpp's finish_surface_sample, for corner + u.x·edge_u +
 // u.y·edge_v), in its order, on eight lanes, so each lane's bits are the ones make_sample makes
@@ -243,6 +219,7 @@ LightSample LightBatches::sample_anew(const SampledLights& set, int index,
   light_ = index;
   p_ = hit.p;
   rays_made_ = 0;
+  traced_ = occluded_ = 0;
   const int want = std::min(kBatch, light_samples_ - before_);
   const SampledLight& l = set.lights()[index];
   const bool batches = l.kind == SampledLightKind::panel || l.kind == SampledLightKind::mesh;
@@ -271,6 +248,18 @@ LightSample LightBatches::sample_anew(const SampledLights& set, int index,
   next_ = 1;
   last_ = 0;
   return copy_of(batch_.at[0]);
+}
+
+void LightBatches::trace_packet() {
+  // The rays from last_ on not yet traced: the tracer takes ray last_ and those that leave its
+  // point (the samples on the surface's side the estimate is tracing; a sample below the surface
+  // is never traced, and leaves the other point).
+  const unsigned offered = unsigned(rays_made_) & ~traced_ & (0xFFu << last_) & ((1u << count_) - 1u);
+  unsigned answered = 0;
+  occluded_ |= tracer_.occluded(tracer_.query, rays_.at, offered, &answered) & answered;
+  traced_ |= answered;
+  ++packets_;
+  packet_rays_ += __builtin_popcount(answered);
 }
 
 Ray LightBatches::shadow_ray_anew(const SurfaceHit& hit, const LightSample& ls) {

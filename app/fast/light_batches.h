@@ -16,6 +16,16 @@
 
 namespace pt {
 
+/// A way to ask whether several shadow rays are blocked at once: the render's ray query's, which
+/// walks rays that leave one point together. occluded(query, rays, offered, &answered) answers
+/// at least the first ray of `offered` (bit k for rays[k]), and sets `answered` to the rays it
+/// answered; bit k of its answer is RayQuery::occluded(rays[k]) for each of them, to the bit.
+struct ShadowRayTracer {
+  const void* query = nullptr;
+  unsigned (*occluded)(const void* query, const Ray* rays, unsigned offered,
+                       unsigned* answered) = nullptr;
+};
+
 /// SampledLights::make_sample and make_shadow_ray's answers, bit for bit, for one camera sample. A
 /// light sample is one chain of long operations (a square root, divisions waiting on it), and the
 /// shadow ray and its walk wait on it in turn, so samples made one call at a time hardly overlap.
@@ -38,8 +48,13 @@ class LightBatches final : public FasterLightSampling {
   /// `rng`: the generator the camera sample's estimate draws from (read, never advanced), or null
   /// to make every sample on its own; `light_samples`: how many samples the estimate takes of
   /// each area light (-l), the most a batch makes for one light and point.
-  explicit LightBatches(const Rng* rng = nullptr, int light_samples = 1)
-      : rng_(rng), light_samples_(light_samples), foresee_(rng != nullptr && light_samples > 1) {}
+  /// `tracer`: where the batch's shadow rays may be traced together (occluded_answer), or none.
+  explicit LightBatches(const Rng* rng = nullptr, int light_samples = 1,
+                        ShadowRayTracer tracer = {})
+      : rng_(rng),
+        light_samples_(light_samples),
+        foresee_(rng != nullptr && light_samples > 1),
+        tracer_(tracer) {}
 
   LightSample sample(const SampledLights& set, int index, const SurfaceHit& hit,
                      glm::vec2 u) override {
@@ -64,6 +79,25 @@ class LightBatches final : public FasterLightSampling {
     return shadow_ray_anew(hit, ls);
   }
 
+  /// Whether `ray` is blocked, where it is, to the bit, the shadow ray the batch last handed out:
+  /// the first time one of the batch's rays is asked, it and the batch's rays after it that leave
+  /// the same point (the samples the estimate is about to trace) are traced as one packet
+  /// through the tracer. False when the batch cannot say (the caller traces the ray itself). A
+  /// ray's answer is a function of its bits alone, so an answer from the packet is the query's.
+  bool occluded_answer(const Ray& ray, bool* occluded) {
+    if (!tracer_.occluded || last_ < 0 || !(rays_made_ >> last_ & 1) ||
+        std::memcmp(&ray, &rays_.at[last_], sizeof(Ray)) != 0)
+      return false;
+    if (!(traced_ >> last_ & 1)) trace_packet();
+    *occluded = (occluded_ >> last_ & 1) != 0;
+    return true;
+  }
+
+  /// How many packets of shadow rays were traced, with how many rays in all, and how many of
+  /// those rays were then asked for (bench's packet occupancy).
+  int packets_traced() const { return packets_; }
+  int packet_rays() const { return packet_rays_; }
+
   /// How many calls were answered from a batch, how many samples were made in one but never asked
   /// for, and how many shadow rays were handed out as made in a batch (tests).
   int answered_ahead() const { return answered_ahead_ + (next_ > 1 ? next_ - 1 : 0); }
@@ -86,6 +120,8 @@ class LightBatches final : public FasterLightSampling {
   /// A call the batch does not answer: a new batch when foreseeing is on and pays, else one sample.
   /// Never inlined into sample(): its frame (eight-lane locals, saved registers) would be paid by
   /// every call the batch answers.
+  /// Traces the batch's ray last_ with its rays after it that leave the same point.
+  [[gnu::noinline]] void trace_packet();
   [[gnu::noinline]] LightSample sample_anew(const SampledLights& set, int index,
                                             const SurfaceHit& hit, glm::vec2 u);
 
@@ -104,6 +140,10 @@ class LightBatches final : public FasterLightSampling {
   /// Which of the batch's samples carry their shadow ray (a bit each), made from the point whose
   /// p, p_error and ng are from_.
   int rays_made_ = 0;
+  /// Which of the batch's rays were traced, and which of those found something in the way.
+  unsigned traced_ = 0, occluded_ = 0;
+  ShadowRayTracer tracer_;
+  int packets_ = 0, packet_rays_ = 0;
   float from_[9];
   /// The batch's samples and rays, left unwritten until a batch fills them: one of these is made
   /// for every camera sample, and clearing them each time would cost a render that never batches.
