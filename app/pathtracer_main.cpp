@@ -118,7 +118,7 @@ int run(int argc, char** argv) {
   TileRenderOptions options;
   options.progress = ProgressBar::stderr_is_terminal();
   RenderReport report = render_scene(settings, scene, *query, &film, options);
-  std::cout << summary_line(report) << "\n";
+  std::cout << summary_line(report) << "\n" << ray_kinds_line(report) << "\n";
 
   image_module.wait();
   write_film(command.output_path, film);

@@ -1,6 +1,7 @@
 #include "app/radiance.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -50,6 +51,15 @@ class PacketShadowQuery final : public RayQuery {
 };
 #endif
 
+/// A camera sample's rays added to its tile's count: all of them, its camera ray and its shadow
+/// rays (the counter's occlusion queries).
+template <class Counting>
+void count_kinds(const Counting& counting, TraceContext& context) {
+  context.rays.add(counting.count());
+  ++context.rays.camera;
+  context.rays.shadow += counting.occluded_count();
+}
+
 // Every ray counts: each camera sample traces through a counter of its own, made on the stack
 // around the render's query, and adds its count to the tile's context. Made for the query's own
 // type where that is known (the wide tree, a final class), so a ray costs one virtual call into
@@ -62,6 +72,7 @@ TracedRadianceFn counted_radiance(const RenderSettings& settings, const Scene& s
       const LocalCountingRayQuery<Query> counting(query);
       const glm::vec3 L = normal_shading(counting, ray);
       context.rays.add(counting.count());
+      ++context.rays.camera;
       return L;
     };
   }
@@ -71,7 +82,7 @@ TracedRadianceFn counted_radiance(const RenderSettings& settings, const Scene& s
   auto trace = [integrator, &query](const Ray& ray, Rng& rng, TraceContext& context) {
     const LocalCountingRayQuery<Query> counting(query);
     const glm::vec3 L = integrator->radiance(ray, rng, counting);
-    context.rays.add(counting.count());
+    count_kinds(counting, context);
     return L;
   };
 #ifdef PT_HAVE_FAST_LIGHTS
@@ -86,7 +97,9 @@ TracedRadianceFn counted_radiance(const RenderSettings& settings, const Scene& s
         const PacketShadowQuery packets(query, batches);
         const LocalCountingRayQuery<PacketShadowQuery> counting(packets);
         const glm::vec3 L = integrator->radiance(ray, rng, counting);
-        context.rays.add(counting.count());
+        count_kinds(counting, context);
+        context.rays.packets += uint64_t(batches.packets_traced());
+        context.rays.packet_rays += uint64_t(batches.packet_rays());
         return L;
       };
     }
@@ -114,6 +127,21 @@ TracedRadianceFn make_radiance(const RenderSettings& settings, const Scene& scen
     return counted_radiance(settings, scene, *wide, layer);
 #endif
   return counted_radiance(settings, scene, query, layer);
+}
+
+std::string ray_kinds_line(const RenderReport& report) {
+  const double per_s = report.seconds > 0.0 ? 1e-6 / report.seconds : 0.0;
+  const uint64_t other = report.rays - std::min(report.rays, report.camera_rays + report.shadow_rays);
+  char line[256];
+  std::snprintf(line, sizeof line, "rays: camera %.1f, shadow %.1f, bounce and other %.1f M/s",
+                double(report.camera_rays) * per_s, double(report.shadow_rays) * per_s,
+                double(other) * per_s);
+  std::string text = line;
+  if (report.packets == 0) return text + "; no shadow packets";
+  std::snprintf(line, sizeof line, "; shadow packets: %.0f %% of the shadow rays, %.1f rays a packet",
+                report.shadow_rays > 0 ? 100.0 * double(report.packet_rays) / double(report.shadow_rays) : 0.0,
+                double(report.packet_rays) / double(report.packets));
+  return text + line;
 }
 
 std::string no_light_warning(const RenderSettings& settings, const Scene& scene) {

@@ -7,6 +7,7 @@
 
 #include "framework/geometry/ray_query.h"
 #include "framework/render/render_settings.h"
+#include "framework/render/tile_renderer.h"
 #include "framework/render/trace_context.h"
 #include "framework/scene/material.h"
 #include "framework/scene/scene.h"
@@ -28,6 +29,12 @@ enum class LightLayer { fast, plain };
 /// cannot be read.
 TracedRadianceFn make_radiance(const RenderSettings& settings, const Scene& scene,
                                const RayQuery& query, LightLayer layer = LightLayer::fast);
+
+/// The render's rays by kind, per second of its tile loop, and how its shadow rays went in
+/// packets: "rays: camera 0.8, shadow 21.9, bounce and other 1.5 M/s; shadow packets: 96 % of
+/// the shadow rays, 7.8 rays a packet" (bounce and other: the nearest-hit queries past the
+/// camera's, the panel checks of shadow rays among them).
+std::string ray_kinds_line(const RenderReport& report);
 
 /// The warning a render owes when it will show normals instead of light because nothing in the
 /// scene emits (no usable light, no emissive surface, no -e map); empty otherwise.

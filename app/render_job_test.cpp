@@ -2,6 +2,7 @@
 #include "app/render_job.h"
 
 #include "app/accelerator.h"
+#include "app/radiance.h"
 
 #include <gtest/gtest.h>
 
@@ -71,6 +72,40 @@ TEST(RenderJob, ARenderOnTheQueryItselfReportsTheRaysItTraced) {
     EXPECT_GT(direct.rays, uint64_t(2 * 24 * 18 * 2)) << "bvh width " << width;
     EXPECT_EQ(direct.rays, counted.traced) << "bvh width " << width;
   }
+}
+
+// The report tells the kinds apart: one camera ray a sample, the shadow rays the occlusion
+// queries, the same counts on the tree's own type (where shadow rays go in packets) as through a
+// counter of another type; and its line says so.
+TEST(RenderJob, RaysAreToldApartByKind) {
+  const Scene scene = load_collada(std::string(pt::test::source_dir()) + "/scenes/cornell_spheres.dae");
+  RenderSettings s;
+  s.width = 24;
+  s.height = 18;
+  s.threads = 2;
+  s.samples_per_pixel = 2;
+  s.light_samples = 16;
+  s.max_depth = 3;
+  const std::unique_ptr<RayQuery> query = make_ray_query(s, scene);
+  Film film(s.width, s.height), counted_film(s.width, s.height);
+  const RenderReport direct = render_scene(s, scene, *query, &film);
+  const CountingRayQuery outer(*query);
+  const RenderReport counted = render_scene(s, scene, outer, &counted_film);
+  EXPECT_EQ(direct.camera_rays, uint64_t(24 * 18 * 2));
+  EXPECT_GT(direct.shadow_rays, 16 * direct.camera_rays / 4) << "a shadow ray per light sample";
+  EXPECT_LT(direct.camera_rays + direct.shadow_rays, direct.rays) << "bounces besides";
+  EXPECT_EQ(direct.camera_rays, counted.camera_rays);
+  EXPECT_EQ(direct.shadow_rays, counted.shadow_rays);
+  EXPECT_EQ(direct.rays, counted.rays);
+  EXPECT_EQ(counted.packets, 0u) << "only the wide tree's own walk traces packets";
+#if defined(PT_HAVE_WIDE_BVH) && defined(PT_HAVE_FAST_LIGHTS) && defined(__AVX2__)
+  EXPECT_GT(direct.packets, 0u);
+#endif
+  EXPECT_LE(direct.packet_rays, 8 * direct.packets);
+  const std::string line = ray_kinds_line(direct);
+  EXPECT_EQ(line.rfind("rays: camera ", 0), 0u) << line;
+  EXPECT_NE(line.find(direct.packets > 0 ? "rays a packet" : "no shadow packets"), std::string::npos)
+      << line;
 }
 
 }  // namespace

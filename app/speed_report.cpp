@@ -201,6 +201,11 @@ int speed_report(SpeedReportOptions o) {
                  {"pathtracer", pathtracer},
                  {"repeat", repeat}};
   const std::regex summary(R"(render: (\d+)x(\d+).*, ([0-9.]+) s, ([0-9.]+) M rays/s)");
+  // The pathtracer's line of rays by kind (ray_kinds_line), and its packets where it has some.
+  const std::regex kinds(R"(rays: camera ([0-9.]+), shadow ([0-9.]+), bounce and other ([0-9.]+) M/s)");
+  const std::regex packets(R"(shadow packets: ([0-9.]+) % of the shadow rays, ([0-9.]+) rays a packet)");
+  const char* kind_keys[] = {"camera_mrays_per_s", "shadow_mrays_per_s", "bounce_mrays_per_s",
+                             "packet_share_percent", "packet_occupancy"};
   int failures = 0;
   for (const SpeedCase& c : cases) {
     std::vector<std::string> argv = {pathtracer};
@@ -209,6 +214,7 @@ int speed_report(SpeedReportOptions o) {
     if (!c.scene.empty()) argv.push_back((fs::path(scenes) / c.scene).string());
     json entry = {{"name", c.name}, {"command", command_text(argv)}};
     std::vector<double> walls, renders, mrays, rss;
+    std::vector<double> by_kind[5];  // in the order of kind_keys
     json runs = json::array();
     std::cerr << "bench render: " << c.name << "\n";
     for (int r = 0; r < repeat; ++r) {
@@ -233,6 +239,17 @@ int speed_report(SpeedReportOptions o) {
         renders.push_back(std::stod(m[3]));
         mrays.push_back(std::stod(m[4]));
       }
+      const std::string kinds_text = line_with(run.output, "rays: camera");
+      if (std::regex_search(kinds_text, m, kinds))
+        for (int k = 0; k < 3; ++k) {
+          one[kind_keys[k]] = std::stod(m[k + 1]);
+          by_kind[k].push_back(std::stod(m[k + 1]));
+        }
+      if (std::regex_search(kinds_text, m, packets))
+        for (int k = 3; k < 5; ++k) {
+          one[kind_keys[k]] = std::stod(m[k - 2]);
+          by_kind[k].push_back(std::stod(m[k - 2]));
+        }
       runs.push_back(one);
     }
     if (!walls.empty()) {
@@ -243,6 +260,8 @@ int speed_report(SpeedReportOptions o) {
       entry["render_s"] = median_of(renders);
       entry["mrays_per_s"] = median_of(mrays);
     }
+    for (int k = 0; k < 5; ++k)
+      if (!by_kind[k].empty()) entry[kind_keys[k]] = median_of(by_kind[k]);
     if (c.writes_image) {
       // The render's own peak, without the image library: the same command at one sample a
       // pixel (memory does not grow with samples) with the image module made unfindable, so it

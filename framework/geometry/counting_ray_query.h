@@ -57,6 +57,7 @@ class LocalCountingRayQuery final : public RayQuery {
 
   bool intersect(const Ray& ray, SurfaceHit* hit) const override {
     ++count_;
+    ++intersect_count_;
     return inner_.intersect(ray, hit);
   }
   bool occluded(const Ray& ray) const override {
@@ -66,10 +67,13 @@ class LocalCountingRayQuery final : public RayQuery {
 
   /// The queries answered so far.
   uint64_t count() const { return count_; }
+  /// Of those, the occlusion queries (shadow rays): counted as the rest, since they are nine in
+  /// ten of a render's rays, and an increment more on each cost half a percent of its time.
+  uint64_t occluded_count() const { return count_ - intersect_count_; }
 
  private:
   const Inner& inner_;
-  mutable uint64_t count_ = 0;
+  mutable uint64_t count_ = 0, intersect_count_ = 0;
 };
 
 }  // namespace pt

@@ -75,6 +75,10 @@ RenderReport render_tiles(const RenderSettings& settings, const PixelFn& pixel, 
   report.region = region;
   for (const TraceContext& c : contexts) {
     report.rays += c.rays.rays;
+    report.camera_rays += c.rays.camera;
+    report.shadow_rays += c.rays.shadow;
+    report.packets += c.rays.packets;
+    report.packet_rays += c.rays.packet_rays;
     report.nonfinite_samples += c.nonfinite_samples;
   }
   for (int y = region.y0; y < region.y1; ++y)

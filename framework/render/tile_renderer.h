@@ -34,6 +34,8 @@ struct RenderReport {
   int threads = 0;            ///< threads the arena had
   double seconds = 0.0;       ///< wall time of the tile loop
   uint64_t rays = 0;          ///< rays the radiance function reported
+  /// Of those, camera and shadow rays, and the packets the shadow rays were traced in (RayCounter).
+  uint64_t camera_rays = 0, shadow_rays = 0, packets = 0, packet_rays = 0;
   long samples = 0;           ///< samples taken (counted on the film)
   uint64_t nonfinite_samples = 0;
 };

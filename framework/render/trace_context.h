@@ -16,6 +16,13 @@ namespace pt {
 /// when every tile is done, so counting costs an add, not a shared cache line.
 struct RayCounter {
   uint64_t rays = 0;
+  /// Of those, by kind: camera rays (one a camera sample) and shadow rays (occlusion queries);
+  /// the rest are nearest-hit queries past the camera's (bounces, and the panel checks of
+  /// shadow rays that meet a light's own panel). Zero where the radiance function does not
+  /// tell kinds apart.
+  uint64_t camera = 0, shadow = 0;
+  /// Shadow rays traced together: how many packets, and how many rays in all.
+  uint64_t packets = 0, packet_rays = 0;
   void add(uint64_t n = 1) { rays += n; }
 };
 
