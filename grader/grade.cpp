@@ -662,17 +662,17 @@ CheckResult grade_render(const Manifest& manifest, const RenderCheck& check,
 namespace {
 fs::path part_folder(int part, const GradeOptions& options);
 
-/// Shows the student's values in the results' words, step by step while `left` lasts: each
-/// step's message quotes its first failing check's (at most kValuesPerStep), and no check's own
-/// output quotes any (the step's message is where a student reads them, and a value said twice
-/// would be a second copy of the student's bytes in the results).
+/// Shows the student's values in the results' words. With a budget (`left`: the bundle's
+/// results, which leave the grading machine) step by step while it lasts: each step's message
+/// quotes its first failing check's (at most kValuesPerStep), and no check's own output quotes
+/// any (the step's message is where a student reads them, and a value said twice would be a
+/// second copy of the student's bytes in the results). Without one (a run on the student's own
+/// machine) every value, each in its bounded form.
 void release_student_values(PartResult& result, int* left) {
-  int own = kValuesPerResults;
-  if (!left) left = &own;
   int none = 0;
   for (StepResult& st : result.steps) {
     st.message = release_values(st.message, left);
-    for (CheckResult& c : st.checks) c.output = release_values(c.output, &none);
+    for (CheckResult& c : st.checks) c.output = release_values(c.output, left ? &none : nullptr);
   }
 }
 }  // namespace

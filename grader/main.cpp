@@ -20,7 +20,6 @@
 #include "grader/manifest.h"
 #include "grader/report.h"
 #include "grader/rules.h"
-#include "grader/student_values.h"
 
 namespace fs = std::filesystem;
 using namespace pt::grader;
@@ -257,9 +256,9 @@ int main(int argc, char** argv) {
   }
   auto start = std::chrono::steady_clock::now();
   std::vector<PartResult> results;
-  // One table and one JSON for every part graded: one budget of the student's values.
-  int values_left = kValuesPerResults;
-  options.quote_budget = &values_left;
+  // A student's own run (or an instructor's tool) shows every value of the student's own code:
+  // nothing leaves the machine it ran on. The bundle's results, which do, hold a budget
+  // (autograde.cpp).
   for (const PartSpec& p : manifest.parts) {
     if (!all && p.part != part) continue;
     std::cerr << "grading part " << p.part << (options.isolated ? " (isolated)" : "") << " ...\n";
