@@ -92,6 +92,30 @@ TEST(russian_roulette, ends_every_path) {
                             "1, and is the path stopped when the coin says so?)";
 }
 
+// Roulette plays from the second bounce on, whatever q is: in a closed dark box at depth limit 2,
+// with roulette on, every path takes its first bounce, so exactly one bounce ray a path (a fixed
+// q below 1 played at the first vertex takes about q of them; the average of ends_every_path
+// cannot tell a q of 0.7 there, which still gives more than 1.5 rays a path).
+TEST(russian_roulette, takes_every_first_bounce) {
+  Scene s;
+  uint32_t m = test::add_material(s, glm::vec3(0.5f));
+  test::add_closed_cube(s, m);
+  test::Rig rig(s);
+  rig.ctx.max_depth = 2;
+  rig.ctx.russian_roulette = true;
+  const int n = 400;
+  Rng rng(31);
+  for (int i = 0; i < n; ++i) {
+    Ray r = test::ray_from_inside(rng);
+    test::bounced_at_hit(rig.ctx, r, rng);
+  }
+  const long rays = rig.query.intersect_calls - n;  // each path's own first ray
+  EXPECT_EQ(rays, n) << n << " paths at depth limit 2 with roulette on traced " << rays
+                     << " bounce rays; the first bounce is always taken (roulette plays from "
+                        "depth 2 on), so each path traces exactly one: fewer means roulette "
+                        "played at the first bounce";
+}
+
 // With roulette off (--no-rr, ctx.russian_roulette false) no path ends at random: in a closed
 // dark box every path takes a bounce ray at each vertex up to the depth limit, exactly
 // max_depth - 1 of them beyond the camera ray's.
