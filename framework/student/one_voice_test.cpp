@@ -96,7 +96,7 @@ std::string student_comment(const std::string& source, const std::string& functi
   return "";
 }
 
-/// The `///` contract above the declaration that says it is step K (NAME), in `header`.
+/// The `///` contracts above the declarations that say they are step K (NAME), in `header`.
 std::string header_contract(const std::string& header, int step, const std::string& name) {
   const std::vector<std::string> lines = lines_of(header);
   const std::string mark = std::to_string(step) + " (" + name + ")";
@@ -105,14 +105,14 @@ std::string header_contract(const std::string& header, int step, const std::stri
     const size_t at = lines[i].find_first_not_of(' ');
     return at == std::string::npos ? std::string() : lines[i].substr(at);
   };
+  // Every block so marked: a step of two functions may give each its own (Bvh's two walks).
+  std::string contract;
   for (size_t i = 0; i < lines.size(); ++i) {
     if (text_of(i).rfind("/// Step", 0) != 0 || lines[i].find(mark) == std::string::npos) continue;
-    std::string contract;
     for (size_t j = i; j < lines.size() && text_of(j).rfind("///", 0) == 0; ++j)
       contract += text_of(j).substr(3) + "\n";
-    return contract;
   }
-  return "";
+  return contract;
 }
 
 std::string joined(const std::set<std::string>& names) {

@@ -71,6 +71,10 @@ class Bvh final : public RayQuery {
   explicit Bvh(const Scene& scene, const BvhOptions& options = {});
 
   bool intersect(const Ray& ray, SurfaceHit* hit) const override;
+  /// Step 3 (traversal), the student's other walk.
+  /// Whether anything lies on `ray` within its interval, as brute force answers: any leaf whose
+  /// leaf_occludes says so will do, in any order; "nothing blocks" only after every leaf the ray
+  /// meets has gone through leaf_occludes.
   bool occluded(const Ray& ray) const override;
 
   const BvhStats& stats() const { return stats_; }
