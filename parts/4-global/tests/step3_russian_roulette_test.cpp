@@ -64,25 +64,33 @@ TEST(russian_roulette, keeps_the_mean_of_a_point_light_inside_a_diffuse_sphere) 
   expect_roulette_keeps_the_mean(s, false, 8, "point light in a sphere");
 }
 
+// The bounce rays `paths` paths take in a closed box of albedo `albedo` with no light (so no
+// shadow rays), each from a ray from inside it (drawn from an Rng seeded with `seed`) and
+// estimated at its hit with depth limit `max_depth`, roulette on or off: every nearest-hit query
+// but the paths' own first rays.
+long bounce_rays_in_dark_box(float albedo, int max_depth, bool roulette, int paths, uint64_t seed) {
+  Scene s;
+  uint32_t m = test::add_material(s, glm::vec3(albedo));
+  test::add_closed_cube(s, m);
+  test::Rig rig(s);
+  rig.ctx.max_depth = max_depth;
+  rig.ctx.russian_roulette = roulette;
+  Rng rng(seed);
+  for (int i = 0; i < paths; ++i) {
+    Ray r = test::ray_from_inside(rng);
+    test::bounced_at_hit(rig.ctx, r, rng);
+  }
+  return rig.query.intersect_calls - paths;
+}
+
 // A closed box of albedo 0.5 (dark: no light, so no shadow rays) with no depth limit worth the
 // name (1000): every path must still end by roulette, long before the limit (about two bounce
 // rays with q the throughput, 0.5 here; a hundred with a fixed q of 0.99), and the first bounce
 // is always taken (roulette from the first bounce on would give about one ray per path, not two;
 // the standard error over 500 paths is about 0.06).
 TEST(russian_roulette, ends_every_path) {
-  Scene s;
-  uint32_t m = test::add_material(s, glm::vec3(0.5f));
-  test::add_closed_cube(s, m);
-  test::Rig rig(s);
-  rig.ctx.max_depth = 1000;
-  rig.ctx.russian_roulette = true;
   const int n = 500;
-  Rng rng(9);
-  for (int i = 0; i < n; ++i) {
-    Ray r = test::ray_from_inside(rng);
-    test::bounced_at_hit(rig.ctx, r, rng);
-  }
-  const double rays = double(rig.query.intersect_calls - n) / n;  // each path's own first ray
+  const double rays = double(bounce_rays_in_dark_box(0.5f, 1000, true, n, 9)) / n;
   EXPECT_GT(rays, 1.5) << "bounce rays per path: " << rays
                        << " (the first bounce is always taken, roulette plays from the second "
                           "on: about two on average here; about one means roulette on the first "
@@ -97,19 +105,8 @@ TEST(russian_roulette, ends_every_path) {
 // q below 1 played at the first vertex takes about q of them; the average of ends_every_path
 // cannot tell a q of 0.7 there, which still gives more than 1.5 rays a path).
 TEST(russian_roulette, takes_every_first_bounce) {
-  Scene s;
-  uint32_t m = test::add_material(s, glm::vec3(0.5f));
-  test::add_closed_cube(s, m);
-  test::Rig rig(s);
-  rig.ctx.max_depth = 2;
-  rig.ctx.russian_roulette = true;
   const int n = 400;
-  Rng rng(31);
-  for (int i = 0; i < n; ++i) {
-    Ray r = test::ray_from_inside(rng);
-    test::bounced_at_hit(rig.ctx, r, rng);
-  }
-  const long rays = rig.query.intersect_calls - n;  // each path's own first ray
+  const long rays = bounce_rays_in_dark_box(0.5f, 2, true, n, 31);
   EXPECT_EQ(rays, n) << n << " paths at depth limit 2 with roulette on traced " << rays
                      << " bounce rays; the first bounce is always taken (roulette plays from "
                         "depth 2 on), so each path traces exactly one: fewer means roulette "
@@ -120,19 +117,8 @@ TEST(russian_roulette, takes_every_first_bounce) {
 // dark box every path takes a bounce ray at each vertex up to the depth limit, exactly
 // max_depth - 1 of them beyond the camera ray's.
 TEST(russian_roulette, none_when_it_is_off) {
-  Scene s;
-  uint32_t m = test::add_material(s, glm::vec3(0.3f));
-  test::add_closed_cube(s, m);
-  test::Rig rig(s);
-  rig.ctx.max_depth = 6;
-  rig.ctx.russian_roulette = false;
   const int n = 200;
-  Rng rng(12);
-  for (int i = 0; i < n; ++i) {
-    Ray r = test::ray_from_inside(rng);
-    test::bounced_at_hit(rig.ctx, r, rng);
-  }
-  const double rays = double(rig.query.intersect_calls - n) / n;
+  const double rays = double(bounce_rays_in_dark_box(0.3f, 6, false, n, 12)) / n;
   EXPECT_EQ(rays, 5.0) << "bounce rays per path with roulette off at depth limit 6, albedo 0.3: "
                        << rays << " (every path goes on to the limit: 5; fewer means paths "
                        << "ended at random although ctx.russian_roulette is false)";
