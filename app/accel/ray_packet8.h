@@ -124,27 +124,18 @@ struct RayPacket8 {
 /// scalings after it are monotone too. An axis without such bounds rules nothing out. One test
 /// for the whole packet: a box it rules out costs no ray a test.
 inline unsigned packet_may_enter8(const Box4 boxes[2], const RayPacket8& p) {
-  constexpr float kFarScale = 1.0f + 2.0f * gamma(3);
-  constexpr float kNearScale = 1.0f - 2.0f * gamma(3);
-  auto plane = [&](int k) {
-    return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_load_ps(boxes[0].bounds[k])),
-                                _mm_load_ps(boxes[1].bounds[k]), 1);
-  };
   __m256 tn = _mm256_set1_ps(-INFINITY), tf = _mm256_set1_ps(INFINITY);
   for (int a = 0; a < 3; ++a) {
     if (!p.bounded[a]) continue;
     const bool negative = std::signbit(p.inv_lo[a]);
     const __m256 o = _mm256_set1_ps(p.origin[a]);
     const __m256 lo = _mm256_set1_ps(p.inv_lo[a]), hi = _mm256_set1_ps(p.inv_hi[a]);
-    const __m256 dn = _mm256_sub_ps(plane(negative ? 3 + a : a), o);
-    const __m256 df = _mm256_sub_ps(plane(negative ? a : 3 + a), o);
+    const __m256 dn = _mm256_sub_ps(box_planes8(boxes, negative ? 3 + a : a), o);
+    const __m256 df = _mm256_sub_ps(box_planes8(boxes, negative ? a : 3 + a), o);
     tn = _mm256_max_ps(_mm256_min_ps(_mm256_mul_ps(dn, lo), _mm256_mul_ps(dn, hi)), tn);
     tf = _mm256_min_ps(_mm256_max_ps(_mm256_mul_ps(df, lo), _mm256_mul_ps(df, hi)), tf);
   }
-  tn = _mm256_min_ps(_mm256_mul_ps(tn, _mm256_set1_ps(kNearScale)),
-                     _mm256_mul_ps(tn, _mm256_set1_ps(kFarScale)));
-  tf = _mm256_max_ps(_mm256_mul_ps(tf, _mm256_set1_ps(kFarScale)),
-                     _mm256_mul_ps(tf, _mm256_set1_ps(kNearScale)));
+  widen_slab_interval8(&tn, &tf);
   const __m256 t0 = _mm256_max_ps(tn, _mm256_set1_ps(p.tmin_lo));
   const __m256 t1 = _mm256_min_ps(tf, _mm256_set1_ps(p.tmax_hi));
   // Unordered counts as "may enter": a NaN bound culls nothing.
@@ -155,8 +146,6 @@ inline unsigned packet_may_enter8(const Box4 boxes[2], const RayPacket8& p) {
 /// lane the very operations of intersect_box8's test of that box for that ray (its planes
 /// chosen by its own octant, its own tmin and tmax), so each bit is that test's answer.
 inline unsigned rays_entering(const Box4 boxes[2], int k, const RayPacket8& p) {
-  constexpr float kFarScale = 1.0f + 2.0f * gamma(3);
-  constexpr float kNearScale = 1.0f - 2.0f * gamma(3);
   const Box4& box = boxes[k / 4];
   const int slot = k % 4;
   __m256 tn = _mm256_set1_ps(-INFINITY), tf = _mm256_set1_ps(INFINITY);
@@ -171,10 +160,7 @@ inline unsigned rays_entering(const Box4 boxes[2], int k, const RayPacket8& p) {
     tn = _mm256_max_ps(n, tn);
     tf = _mm256_min_ps(f, tf);
   }
-  tn = _mm256_min_ps(_mm256_mul_ps(tn, _mm256_set1_ps(kNearScale)),
-                     _mm256_mul_ps(tn, _mm256_set1_ps(kFarScale)));
-  tf = _mm256_max_ps(_mm256_mul_ps(tf, _mm256_set1_ps(kFarScale)),
-                     _mm256_mul_ps(tf, _mm256_set1_ps(kNearScale)));
+  widen_slab_interval8(&tn, &tf);
   const __m256 t0 = _mm256_max_ps(tn, p.tmin);
   const __m256 t1 = _mm256_min_ps(tf, p.tmax);
   return unsigned(_mm256_movemask_ps(_mm256_cmp_ps(t0, t1, _CMP_LE_OS)));
@@ -184,27 +170,18 @@ inline unsigned rays_entering(const Box4 boxes[2], int k, const RayPacket8& p) {
 /// answer of intersect_box8's test of that ray (its lanes hold the ray's values, from the
 /// packet's lane j, and the very operations).
 inline unsigned ray_enters8(const Box4 boxes[2], int j, const RayPacket8& p) {
-  constexpr float kFarScale = 1.0f + 2.0f * gamma(3);
-  constexpr float kNearScale = 1.0f - 2.0f * gamma(3);
   const __m256i lane = _mm256_set1_epi32(j);
   const BoxPlanes& planes = kBoxPlanes[p.octant(j)];
-  auto plane = [&](int k) {
-    return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_load_ps(boxes[0].bounds[k])),
-                                _mm_load_ps(boxes[1].bounds[k]), 1);
-  };
   __m256 tn = _mm256_set1_ps(-INFINITY), tf = _mm256_set1_ps(INFINITY);
   for (int a = 0; a < 3; ++a) {
     const __m256 o = _mm256_permutevar8x32_ps(p.o[a], lane);
     const __m256 inv = _mm256_permutevar8x32_ps(p.inv_d[a], lane);
-    const __m256 n = _mm256_mul_ps(_mm256_sub_ps(plane(planes.near_plane[a]), o), inv);
-    const __m256 f = _mm256_mul_ps(_mm256_sub_ps(plane(planes.far_plane[a]), o), inv);
+    const __m256 n = _mm256_mul_ps(_mm256_sub_ps(box_planes8(boxes, planes.near_plane[a]), o), inv);
+    const __m256 f = _mm256_mul_ps(_mm256_sub_ps(box_planes8(boxes, planes.far_plane[a]), o), inv);
     tn = _mm256_max_ps(n, tn);
     tf = _mm256_min_ps(f, tf);
   }
-  tn = _mm256_min_ps(_mm256_mul_ps(tn, _mm256_set1_ps(kNearScale)),
-                     _mm256_mul_ps(tn, _mm256_set1_ps(kFarScale)));
-  tf = _mm256_max_ps(_mm256_mul_ps(tf, _mm256_set1_ps(kFarScale)),
-                     _mm256_mul_ps(tf, _mm256_set1_ps(kNearScale)));
+  widen_slab_interval8(&tn, &tf);
   const __m256 t0 = _mm256_max_ps(tn, _mm256_permutevar8x32_ps(p.tmin, lane));
   const __m256 t1 = _mm256_min_ps(tf, _mm256_permutevar8x32_ps(p.tmax, lane));
   return unsigned(_mm256_movemask_ps(_mm256_cmp_ps(t0, t1, _CMP_LE_OS)));
