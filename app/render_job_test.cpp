@@ -18,17 +18,29 @@ struct Counted {
   uint64_t traced = 0;    ///< what actually reached the ray query
 };
 
-/// Renders the project's Cornell box small through a counting query of its own, so the count the
-/// render reports can be compared with the calls the query really received.
-Counted render_cornell(RenderSettings settings) {
-  const Scene scene = load_collada(std::string(pt::test::source_dir()) + "/scenes/cornell_spheres.dae");
+/// The project's Cornell box, loaded once for every test here.
+const Scene& cornell() {
+  static const Scene scene =
+      load_collada(std::string(pt::test::source_dir()) + "/scenes/cornell_spheres.dae");
+  return scene;
+}
+
+/// `settings` made small: 24 x 18 pixels on two threads.
+RenderSettings small(RenderSettings settings) {
   settings.width = 24;
   settings.height = 18;
   settings.threads = 2;
-  const std::unique_ptr<RayQuery> query = make_ray_query(settings, scene);
+  return settings;
+}
+
+/// Renders the project's Cornell box small through a counting query of its own, so the count the
+/// render reports can be compared with the calls the query really received.
+Counted render_cornell(RenderSettings settings) {
+  settings = small(settings);
+  const std::unique_ptr<RayQuery> query = make_ray_query(settings, cornell());
   const CountingRayQuery outer(*query);
   Film film(settings.width, settings.height);
-  const RenderReport report = render_scene(settings, scene, outer, &film);
+  const RenderReport report = render_scene(settings, cornell(), outer, &film);
   return {report.rays, outer.total()};
 }
 
@@ -55,12 +67,9 @@ TEST(RenderJob, ShadowAndBounceRaysAreCounted) {
 // A render straight on the wide tree counts its rays without the counter above (on the tree's own
 // type); the same render, same seed, through that counter traces the same rays.
 TEST(RenderJob, ARenderOnTheQueryItselfReportsTheRaysItTraced) {
-  const Scene scene = load_collada(std::string(pt::test::source_dir()) + "/scenes/cornell_spheres.dae");
+  const Scene& scene = cornell();
   for (int width : {2, 8}) {
-    RenderSettings s;
-    s.width = 24;
-    s.height = 18;
-    s.threads = 2;
+    RenderSettings s = small({});
     s.samples_per_pixel = 2;
     s.light_samples = 2;
     s.max_depth = 3;
@@ -78,11 +87,8 @@ TEST(RenderJob, ARenderOnTheQueryItselfReportsTheRaysItTraced) {
 // queries, the same counts on the tree's own type (where shadow rays go in packets) as through a
 // counter of another type; and its line says so.
 TEST(RenderJob, RaysAreToldApartByKind) {
-  const Scene scene = load_collada(std::string(pt::test::source_dir()) + "/scenes/cornell_spheres.dae");
-  RenderSettings s;
-  s.width = 24;
-  s.height = 18;
-  s.threads = 2;
+  const Scene& scene = cornell();
+  RenderSettings s = small({});
   s.samples_per_pixel = 2;
   s.light_samples = 16;
   s.max_depth = 3;
