@@ -1,18 +1,24 @@
 # pt_add_isolated_grading(): the targets `grader --part N --isolated` builds, so that only part
 # N's student code is graded and a bug in one part never costs points in another.
 #
-#   grade_partN_isolated  part N's objects from parts/ (the student's), every other part's
-#                         compiled from the complete solution in PT_SOLUTION_DIR/parts/, the
-#                         given code (framework, pipeline/, app/) from this tree, linked into
-#                         pt_isolatedN; on it pathtracer_isolatedN, with which part N's renders
-#                         are graded (its tests are graded by their probes and judges,
-#                         grader/judge/CMakeLists.txt, which link the earlier parts the same way)
+#   grade_partN_isolated  part N's objects from parts/ (the student's), every earlier part's
+#                         compiled from the complete solution in PT_SOLUTION_DIR/parts/, every
+#                         later part's from the handout's stubs in PT_STUB_DIR/parts/ (or, without
+#                         stubs, from the solution too), the given code (framework, pipeline/,
+#                         app/) from this tree, linked into pt_isolatedN; on it
+#                         pathtracer_isolatedN, with which part N's renders are graded (its tests
+#                         are graded by their probes and judges, grader/judge/CMakeLists.txt,
+#                         which link the earlier parts the same way and no later one)
 #   pathtracer_solution   every part from the solution: the references of the renders' variants
 #
 # PT_SOLUTION_DIR is a copy of the project with the complete solution, kept where the student's
 # code cannot change it (the autograder bundle's own copy; a mutant run's pristine tree). Left
 # empty, or naming this tree, the solution is this tree: every part is already the solution's,
 # so grade_partN_isolated is grade_partN and the grader grades the ordinary targets.
+#
+# A part's renders use no later part (Part 1's are normals by brute force; Part 3's are direct
+# light, with no path and no adaptive loop), so the bundle (PT_STUB_DIR set) links the later parts'
+# stubs: a process that runs part N's code holds no solution of a part its checks do not use.
 #
 # The solution's part files are compiled against this tree's headers (the given headers are the
 # same in both: they hold no solution), so the objects of every other layer are reused as they
@@ -21,6 +27,8 @@ include_guard(GLOBAL)
 
 set(PT_SOLUTION_DIR "" CACHE PATH
     "A copy of the project holding the complete solution, for `grader --isolated` (empty: this tree)")
+set(PT_STUB_DIR "" CACHE PATH
+    "A folder holding the handout's stubs under parts/, linked for the parts after the graded one")
 
 function(pt_add_isolated_grading)
   get_property(parts GLOBAL PROPERTY PT_PARTS)
@@ -42,17 +50,34 @@ function(pt_add_isolated_grading)
     return()
   endif()
 
-  # The solution's part objects, once per part.
+  set(stubs "")
+  if(PT_STUB_DIR)
+    get_filename_component(stubs "${PT_STUB_DIR}" REALPATH)
+  endif()
+
+  # The solution's part objects, and the stubs' where there are stubs, once per part.
   set(below pt_framework)
   foreach(k ${parts})
     get_property(dir GLOBAL PROPERTY PT_PART${k}_DIR)
-    file(GLOB srcs CONFIGURE_DEPENDS ${solution}/parts/${dir}/*.cpp)
-    if(NOT srcs)
-      message(FATAL_ERROR "PT_SOLUTION_DIR: ${solution}/parts/${dir} has no sources")
+    set(kinds solution)
+    if(stubs)
+      list(APPEND kinds stub)
     endif()
-    add_library(pt_solution_part${k}_obj OBJECT ${srcs})
-    target_include_directories(pt_solution_part${k}_obj PUBLIC ${PROJECT_SOURCE_DIR})
-    target_link_libraries(pt_solution_part${k}_obj PUBLIC ${below})
+    foreach(kind ${kinds})
+      if(kind STREQUAL "solution")
+        set(from ${solution})
+      else()
+        set(from ${stubs})
+      endif()
+      file(GLOB srcs CONFIGURE_DEPENDS ${from}/parts/${dir}/*.cpp)
+      if(NOT srcs)
+        string(TOUPPER "PT_${kind}_DIR" variable)
+        message(FATAL_ERROR "${variable}: ${from}/parts/${dir} has no sources")
+      endif()
+      add_library(pt_${kind}_part${k}_obj OBJECT ${srcs})
+      target_include_directories(pt_${kind}_part${k}_obj PUBLIC ${PROJECT_SOURCE_DIR})
+      target_link_libraries(pt_${kind}_part${k}_obj PUBLIC ${below})
+    endforeach()
     get_property(pipeline GLOBAL PROPERTY PT_PART${k}_PIPELINE)
     set(below pt_part${k})
     if(pipeline)
@@ -90,6 +115,8 @@ function(pt_add_isolated_grading)
     foreach(k ${parts})
       if(k EQUAL n)
         list(APPEND objects $<TARGET_OBJECTS:pt_part${k}_obj>)
+      elseif(k GREATER n AND stubs)
+        list(APPEND objects $<TARGET_OBJECTS:pt_stub_part${k}_obj>)
       else()
         list(APPEND objects $<TARGET_OBJECTS:pt_solution_part${k}_obj>)
       endif()

@@ -26,6 +26,8 @@
 #include "grader/manifest.h"
 #include "grader/report.h"
 #include "grader/scene_variant.h"
+#include "grader/solution_fingerprints.h"
+#include "grader/student_traces.h"
 #include "grader/student_values.h"
 
 namespace fs = std::filesystem;
@@ -133,6 +135,48 @@ std::string excerpt(const std::string& output, size_t lines = 15) {
   return s;
 }
 
+/// Gives `path` and everything below it but `skip` to `uid`:`uid` (links themselves, not
+/// what they name).
+void give_all_but(const fs::path& path, const fs::path& skip, long uid) {
+  lchown(path.c_str(), uid_t(uid), gid_t(uid));
+  std::error_code ec;
+  for (fs::recursive_directory_iterator it(path, ec), end; !ec && it != end; it.increment(ec)) {
+    if (it->path() == skip) {
+      it.disable_recursion_pending();
+      continue;
+    }
+    lchown(it->path().c_str(), uid_t(uid), gid_t(uid));
+  }
+}
+
+}  // namespace
+
+void open_build_for_compile(const AutogradeLayout& L, long uid) {
+  if (uid >= 0) give_all_but(L.build, secret_of(L), uid);
+  set_modes(L.build, fs::perms(0755), fs::perms(0644), fs::perms(0755), secret_of(L));
+}
+
+void close_build_after_compile(const AutogradeLayout& L, bool given) {
+  const fs::path secret = secret_of(L);
+  if (given) give_all_but(L.build, secret, 0);
+  set_modes(L.build, fs::perms(0711), fs::perms(0600), fs::perms(0711), secret);
+  // A shared library is read by the loader (dlopen maps it): the image module, which every
+  // render and image test loads, holds no solution, so it stays readable.
+  std::error_code ec;
+  for (fs::recursive_directory_iterator it(L.build, ec), end; !ec && it != end; it.increment(ec)) {
+    if (it->path() == secret) {
+      it.disable_recursion_pending();
+      continue;
+    }
+    std::string name = it->path().filename().string();
+    if (it->is_regular_file() && !it->is_symlink() && name.size() > 3 &&
+        name.compare(name.size() - 3, 3, ".so") == 0)
+      fs::permissions(it->path(), fs::perms(0755), ec);
+  }
+}
+
+namespace {
+
 /// Whether the student's build of a part succeeded, and its error excerpt when not.
 struct BuildOutcome {
   bool ok = false;
@@ -157,40 +201,12 @@ BuildOutcome student_build(int part, const AutogradeLayout& L, const Sandbox& sa
   o.limits.file_size = size_t(1) << 30;
   o.limits.disk_bytes = size_t(4) << 30;
   o.environment.push_back("CCACHE_DISABLE=1");
-  const fs::path secret = secret_of(L);
-  // The tree but its secret folder becomes the student's user's while it compiles.
-  auto give = [&](long uid, long gid) {
-    lchown(L.build.c_str(), uid_t(uid), gid_t(gid));
-    std::error_code ec;
-    for (fs::recursive_directory_iterator it(L.build, ec), end; !ec && it != end; it.increment(ec)) {
-      if (it->path() == secret) {
-        it.disable_recursion_pending();
-        continue;
-      }
-      lchown(it->path().c_str(), uid_t(uid), gid_t(gid));
-    }
-  };
   const long builder = sandbox.uid_of(scratch);
-  if (sandbox.protects()) give(builder, builder);
+  open_build_for_compile(L, sandbox.protects() ? builder : -1);
   o.confinement.writable.push_back(L.build.string());
-  set_modes(L.build, fs::perms(0755), fs::perms(0644), fs::perms(0755), secret);
   ChildResult c = run_child({"cmake", "--build", L.build.string(), "--target", objects, "-j",
                              std::to_string(std::max(1, jobs))}, o);
-  if (sandbox.protects()) give(0, 0);
-  set_modes(L.build, fs::perms(0711), fs::perms(0600), fs::perms(0711), secret);
-  // A shared library is read by the loader (dlopen maps it): the image module, which every
-  // render and image test loads, holds no solution, so it stays readable.
-  std::error_code ec;
-  for (fs::recursive_directory_iterator it(L.build, ec), end; !ec && it != end; it.increment(ec)) {
-    if (it->path() == secret) {
-      it.disable_recursion_pending();
-      continue;
-    }
-    std::string name = it->path().filename().string();
-    if (it->is_regular_file() && !it->is_symlink() && name.size() > 3 &&
-        name.compare(name.size() - 3, 3, ".so") == 0)
-      fs::permissions(it->path(), fs::perms(0755), ec);
-  }
+  close_build_after_compile(L, sandbox.protects());
   sandbox.finish(scratch);
   if (!c.ok()) {
     // Where its first errors are and what kind, never the compiler's words (they quote the code).
@@ -275,10 +291,18 @@ void autograde_setup(const std::string& root, const std::string& grader_exe, int
     if (e.is_regular_file() && !e.is_symlink() && is_solution_only(read_text_file(e.path())))
       fs::permissions(e.path(), fs::perms(0600));
   }
+  // A part's isolated renderer links the later parts' stubs, the copy just written: configured
+  // again, so that the build knows them.
+  ChildResult configured =
+      run_child({"cmake", "-DPT_STUB_DIR=" + L.stubs().string(), L.build.string()}, 600.0);
+  if (!configured.ok())
+    throw std::runtime_error("the build cannot be configured with the stubs (" +
+                             configured.describe() + "):\n" + excerpt(configured.output, 30));
   // What grading runs, built now with the stubs in the part folders: the judges (no student
   // code), the complete solution's renderer (the references of the renders' variants), and every
   // object a part's probes link, so that a submission's build compiles its own files only. The
-  // solution's objects are compiled from the private copy into the secret folder.
+  // solution's objects, and the stubs' a part's renderer links for the parts after it, are
+  // compiled into the secret folder.
   std::vector<std::string> targets = {"pathtracer_solution"};
   Manifest manifest = read_manifest((L.project / "reference" / "manifest.json").string());
   for (const PartSpec& spec : manifest.parts) {
@@ -308,6 +332,61 @@ void autograde_setup(const std::string& root, const std::string& grader_exe, int
   fs::permissions(L.scratch, fs::perms(0711));
   std::cerr << "autograde-setup: " << files.size() << " student files, grading programs built, "
             << "private folder " << L.private_dir << "\n";
+  std::cerr << "autograde-setup: " << check_no_solution_readable(L) << "\n";
+}
+
+std::string check_no_solution_readable(const AutogradeLayout& L) {
+  if (geteuid() != 0) return "not root: the walk as the student's user was not made";
+  // The solution's objects, and every other object of the build: the given code's and the stubs'.
+  std::vector<fs::path> solution, given;
+  std::error_code ec;
+  for (fs::recursive_directory_iterator it(L.build, ec), end; !ec && it != end; it.increment(ec)) {
+    if (!it->is_regular_file() || it->path().extension() != ".o") continue;
+    const bool of_solution =
+        it->path().string().find("/CMakeFiles/pt_solution_part") != std::string::npos;
+    (of_solution ? solution : given).push_back(it->path());
+  }
+  if (solution.empty())
+    throw std::runtime_error(secret_of(L).string() + ": no objects of the solution to take prints of");
+  const Fingerprints prints = fingerprints_of(solution, given);
+  if (prints.by_hash.size() < 100)
+    throw std::runtime_error("the solution's objects give only " +
+                             std::to_string(prints.by_hash.size()) + " fingerprints");
+  // Where the set-up wrote, or a process could have: the root, the shared writable places, the
+  // set-up user's home (a compiler cache).
+  std::vector<fs::path> roots = {L.root};
+  for (const std::string& f : world_writable_places().folders) roots.push_back(f);
+  if (const char* home = std::getenv("HOME")) roots.push_back(home);
+  // A uid of the first slot, which owns nothing: what any student's process can open.
+  const long uid = kFirstStudentUid;
+  auto walk = [&](const char* when, WalkCount* n) {
+    const std::vector<Carrier> found = files_carrying_as(uid, kStudentGroup, prints, roots, n);
+    if (found.empty()) return;
+    std::string list;
+    for (size_t i = 0; i < found.size() && i < 10; ++i)
+      list += "\n  " + found[i].path + " (at byte " + std::to_string(found[i].offset) + ": " +
+              found[i].fingerprint + ")";
+    throw std::runtime_error(std::to_string(found.size()) + " file(s) the student's user can open " +
+                             when + " carry the solution's code:" + list);
+  };
+  WalkCount after, compiling;
+  walk("after set-up", &after);
+  open_build_for_compile(L, uid);
+  try {
+    walk("while a part compiles", &compiling);
+  } catch (...) {
+    close_build_after_compile(L, true);
+    throw;
+  }
+  close_build_after_compile(L, true);
+  char line[400];
+  std::snprintf(line, sizeof line,
+                "no file the student's user can open carries the solution's code (%zu "
+                "fingerprints of %zu objects; after set-up %zu files, %.1f MB read; while a part "
+                "compiles %zu files, %.1f MB)",
+                prints.by_hash.size(), prints.objects, after.files, after.bytes / 1048576.0,
+                compiling.files, compiling.bytes / 1048576.0);
+  return line;
 }
 
 int autograde(const std::string& root, const std::vector<int>& parts,

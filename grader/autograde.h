@@ -69,6 +69,19 @@ std::string mount_tree_over(const std::string& tree, const std::string& project)
 int autograde(const std::string& root, const std::vector<int>& parts,
               const AutogradeTuning& tuning = {});
 
+/// The build tree as a part's compile has it: everything but the secret folder the user `uid`'s
+/// (-1: owners kept), folders 0755, files 0644. close_build_after_compile puts it back: root's
+/// (when `given`), folders and programs 0711, files 0600, shared libraries 0755.
+void open_build_for_compile(const AutogradeLayout& L, long uid);
+void close_build_after_compile(const AutogradeLayout& L, bool given);
+
+/// The proof autograde-setup ends with: takes fingerprints of the solution's objects (the
+/// secret folder's pt_solution_part*_obj) and walks, as a student's user, every file of the root,
+/// of the shared writable places and of the set-up user's home, once as grading leaves the tree
+/// and once as a part's compile has it. Returns one line of what it walked; throws naming the
+/// files when any that user can open carries a fingerprint.
+std::string check_no_solution_readable(const AutogradeLayout& L);
+
 /// Gives every file under `dir` (itself included, links not followed) to `uid`:`gid`.
 void give_tree(const std::filesystem::path& dir, long uid, long gid);
 

@@ -44,10 +44,13 @@ if [ "${PT_CCACHE:-0}" = 1 ] && command -v ccache >/dev/null 2>&1; then
 fi
 say "configuring the instructor's tree, building the grader with $JOBS jobs"
 # The build sits where a developer's does (project/build), so a compiler cache keyed on paths
-# relative to the project serves it.
+# relative to the project serves it. The solution-only speed layers (the wide BVH, the light
+# batches) are not built: nothing compiled from a solution-only source exists on the grading
+# machine, and every render is the handout's renderer with the parts it grades.
 BUILD="$SRC/project/build"
 cmake -S "$SRC/project" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-  -DPT_SOLUTION_DIR="$PT/private/solution" -DPT_TEST_DISCOVERY=PRE_TEST "${launcher[@]}" >/dev/null
+  -DPT_SOLUTION_DIR="$PT/private/solution" -DPT_TEST_DISCOVERY=PRE_TEST \
+  -DPT_WIDE_BVH=OFF -DPT_FAST_LIGHTS=OFF "${launcher[@]}" >/dev/null
 cmake --build "$BUILD" -j "$JOBS" --target grader
 # The grader puts the stubs in the part folders, then builds what grading runs (the judges, the
 # complete solution's renderer from the private copy, every object the probes link) into the

@@ -28,6 +28,7 @@
 #include "framework/testing/temp_folder.h"
 #include "framework/testing/test_paths.h"
 #include "framework/text/text_file.h"
+#include "grader/autograde.h"
 #include "grader/batch.h"
 #include "grader/bundle.h"
 #include "grader/handout.h"
@@ -799,6 +800,33 @@ TEST_F(GraderBundle, AMaximisingCheaterCarriesAtMost512CharactersOut) {
                 build ? "in a failed build" : "at run time", chosen);
     EXPECT_LE(chosen, 512u) << outputs(results[0]) << "\n" << outputs(results[1]);
   }
+}
+
+// After every grading above, as after set-up: no file a student's user can open, as grading
+// leaves the tree and as a part's compile has it, carries a fingerprint of the solution's
+// objects (setup.sh's own check, made again); and the check is no formality: a readable copy of
+// one solution object, planted in a shared folder, is named.
+TEST_F(GraderBundle, ZyNoFileTheStudentCanOpenCarriesTheSolution) {
+  const std::string said = "no file the student's user can open carries the solution's code (";
+  ASSERT_NE(bundle_->log().find(said), std::string::npos) << "setup.sh made no walk:\n" << bundle_->log();
+  const AutogradeLayout L = AutogradeLayout::under(bundle_->root().string());
+  std::string line;
+  ASSERT_NO_THROW(line = check_no_solution_readable(L));
+  std::printf("%s\n", line.c_str());
+  fs::path object;
+  for (const fs::path& f : files_under(L.build / "secret" / "CMakeFiles"))
+    if (f.string().find("pt_solution_part3_obj") != std::string::npos && f.extension() == ".o") object = f;
+  ASSERT_FALSE(object.empty());
+  const fs::path planted = fs::temp_directory_path() / "pt-planted-cache-entry";
+  fs::copy_file(object, planted, fs::copy_options::overwrite_existing);
+  fs::permissions(planted, fs::perms(0644));
+  try {
+    check_no_solution_readable(L);
+    ADD_FAILURE() << "a readable copy of " << object << " was not found";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find(planted.string()), std::string::npos) << e.what();
+  }
+  fs::remove(planted);
 }
 
 // Last: after every grading above, no file and no IPC object of any student uid is anywhere on
