@@ -164,10 +164,10 @@ ProbeCall::~ProbeCall() {
   }
 }
 
-ProbeCallback::ProbeCallback(Fn fn, int which) : fn_(fn), which_(which) {
+ProbeCallback::ProbeCallback(Fn fn, int which, bool any_depth) : fn_(fn), which_(which) {
   // Only a callback handed to a call the test made is the test's: one the student's own code
   // passes between its functions is part of the outer call's work.
-  live_ = recording() && depth == 1 && !frames.empty();
+  live_ = recording() && (depth == 1 || (any_depth && depth > 1)) && !frames.empty();
 }
 
 void ProbeCallback::begin() {
@@ -234,12 +234,14 @@ bool JudgeCall::next_callback(int* which, Cursor* args) {
   if (n != counters().size())
     throw RecordError(std::string("the record of ") + name_of(fn_) +
                       " moves a number of counters the test does not have");
-  for (const Counter& c : counters()) {
-    int64_t d = out_.get<int64_t>();
-    if (c.wide)
-      *static_cast<uint64_t*>(c.at) += uint64_t(d);
-    else
-      *static_cast<long*>(c.at) += long(d);
+  // Every counter a test reads moves only in its callbacks (a leaf test, a ray of the context's
+  // query, a callback of the test's), which the judge has just made again itself: what the
+  // record says the call moved outside them is the student's code writing the test's counters.
+  for (size_t i = 0; i < counters().size(); ++i) {
+    if (out_.get<int64_t>() != 0)
+      throw RecordError(std::string("your ") + name_of(fn_) +
+                        " changed a counter of the test's itself (the judge counts the work a "
+                        "call does: the rays it traces, the leaves it tests)");
   }
   return false;
 }

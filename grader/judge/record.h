@@ -51,6 +51,12 @@ enum class Fn : uint16_t {
 /// judge runs the test itself, so its answers and the work it counts are the judge's own.
 inline constexpr int kLeafTest = 1;
 
+/// The callbacks an estimator makes through its context's ray query (LightingContext::query):
+/// the probe hands the student's code a query that records each ray (grader/judge/
+/// recorded_query.h), the judge traces the same ray with its own query, so the rays a rule
+/// counts are the judge's count, and the record's answer must be the judge's.
+inline constexpr int kQueryIntersect = 2, kQueryOccluded = 3;
+
 /// The name a student knows a function by, for messages.
 const char* name_of(Fn fn);
 
@@ -118,6 +124,8 @@ class ProbeCall {
   Bytes out;
   /// The call returned: writes its outputs and counter moves.
   void returned();
+  /// A call the test made (recorded), not one the student's code made to its own functions.
+  bool top() const { return top_; }
 
  private:
   Fn fn_;
@@ -130,7 +138,9 @@ class ProbeCall {
 /// inside it are recorded as the test's own.
 class ProbeCallback {
  public:
-  ProbeCallback(Fn fn, int which);
+  /// `any_depth`: recorded wherever the graded call's own code makes it (a ray traced from a
+  /// function the call's code calls), not only from the call itself.
+  ProbeCallback(Fn fn, int which, bool any_depth = false);
   ~ProbeCallback();
   ProbeCallback(const ProbeCallback&) = delete;
   ProbeCallback& operator=(const ProbeCallback&) = delete;

@@ -1,5 +1,6 @@
 // Part 3's probe: each graded function of Part 3, recorded as the test calls it (record.h).
 #include "grader/judge/record.h"
+#include "grader/judge/recorded_query.h"
 #include "grader/judge/wrap.h"
 #include "parts/3-direct/diffuse_bsdf.h"
 #include "parts/3-direct/direct_lighting.h"
@@ -58,7 +59,8 @@ float wrap_diffuse_pdf(const DiffuseBsdf* bsdf, const glm::vec3& wo, const glm::
 glm::vec3 wrap_zero_bounce_radiance(const LightingContext&, const Ray&, const SurfaceHit&) PT_WRAP(ZERO_BOUNCE_RADIANCE);
 glm::vec3 wrap_zero_bounce_radiance(const LightingContext& ctx, const Ray& ray, const SurfaceHit& hit) {
   ProbeCall call(Fn::zero_bounce_radiance);
-  glm::vec3 L = real::zero_bounce_radiance(ctx, ray, hit);
+  RecordedContext recorded(ctx, call, Fn::zero_bounce_radiance);
+  glm::vec3 L = real::zero_bounce_radiance(recorded.get(), ray, hit);
   call.out.put(L);
   call.returned();
   return L;
@@ -68,7 +70,8 @@ glm::vec3 wrap_zero_bounce_radiance(const LightingContext& ctx, const Ray& ray, 
 template <glm::vec3 (*Real)(const LightingContext&, const ShadingPoint&, Rng&)>
 glm::vec3 record_estimate(Fn fn, const LightingContext& ctx, const ShadingPoint& sp, Rng& rng) {
   ProbeCall call(fn);
-  glm::vec3 L = Real(ctx, sp, rng);
+  RecordedContext recorded(ctx, call, fn);
+  glm::vec3 L = Real(recorded.get(), sp, rng);
   call.out.put(L);
   call.out.put(rng);
   call.returned();

@@ -1,5 +1,6 @@
 // Part 4's probe: each graded function of Part 4, recorded as the test calls it (record.h).
 #include "grader/judge/record.h"
+#include "grader/judge/recorded_query.h"
 #include "grader/judge/wrap.h"
 #include "parts/4-global/global_illumination.h"
 #include "parts/4-global/mis.h"
@@ -31,20 +32,23 @@ glm::vec3 finish(ProbeCall& call, glm::vec3 L, const Rng& rng) {
 glm::vec3 wrap_direct_radiance(const LightingContext&, const ShadingPoint&, Rng&) PT_WRAP(DIRECT_RADIANCE);
 glm::vec3 wrap_direct_radiance(const LightingContext& ctx, const ShadingPoint& sp, Rng& rng) {
   ProbeCall call(Fn::direct_radiance);
-  return finish(call, real::direct_radiance(ctx, sp, rng), rng);
+  RecordedContext recorded(ctx, call, Fn::direct_radiance);
+  return finish(call, real::direct_radiance(recorded.get(), sp, rng), rng);
 }
 
 glm::vec3 wrap_at_least_one_bounce_radiance(const LightingContext&, const ShadingPoint&, int, Rng&) PT_WRAP(AT_LEAST_ONE_BOUNCE_RADIANCE);
 glm::vec3 wrap_at_least_one_bounce_radiance(const LightingContext& ctx, const ShadingPoint& sp,
                                             int depth, Rng& rng) {
   ProbeCall call(Fn::at_least_one_bounce_radiance);
-  return finish(call, real::at_least_one_bounce_radiance(ctx, sp, depth, rng), rng);
+  RecordedContext recorded(ctx, call, Fn::at_least_one_bounce_radiance);
+  return finish(call, real::at_least_one_bounce_radiance(recorded.get(), sp, depth, rng), rng);
 }
 
 glm::vec3 wrap_estimate_global_illumination(const LightingContext&, const Ray&, Rng&) PT_WRAP(ESTIMATE_GLOBAL_ILLUMINATION);
 glm::vec3 wrap_estimate_global_illumination(const LightingContext& ctx, const Ray& ray, Rng& rng) {
   ProbeCall call(Fn::estimate_global_illumination);
-  return finish(call, real::estimate_global_illumination(ctx, ray, rng), rng);
+  RecordedContext recorded(ctx, call, Fn::estimate_global_illumination);
+  return finish(call, real::estimate_global_illumination(recorded.get(), ray, rng), rng);
 }
 
 float wrap_power_heuristic(int, float, int, float) PT_WRAP(POWER_HEURISTIC);
@@ -59,7 +63,8 @@ float wrap_power_heuristic(int n_a, float pdf_a, int n_b, float pdf_b) {
 glm::vec3 wrap_estimate_direct_mis(const LightingContext&, const ShadingPoint&, Rng&) PT_WRAP(ESTIMATE_DIRECT_MIS);
 glm::vec3 wrap_estimate_direct_mis(const LightingContext& ctx, const ShadingPoint& sp, Rng& rng) {
   ProbeCall call(Fn::estimate_direct_mis);
-  return finish(call, real::estimate_direct_mis(ctx, sp, rng), rng);
+  RecordedContext recorded(ctx, call, Fn::estimate_direct_mis);
+  return finish(call, real::estimate_direct_mis(recorded.get(), sp, rng), rng);
 }
 
 }  // namespace pt::judge

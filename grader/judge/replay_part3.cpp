@@ -43,17 +43,22 @@ float DiffuseBsdf::pdf(const glm::vec3&, const glm::vec3&) const {
   return p;
 }
 
-glm::vec3 zero_bounce_radiance(const LightingContext&, const Ray&, const SurfaceHit&) {
-  return replay_vec3(Fn::zero_bounce_radiance);
+glm::vec3 zero_bounce_radiance(const LightingContext& ctx, const Ray&, const SurfaceHit&) {
+  const Fn fn = Fn::zero_bounce_radiance;
+  JudgeCall call(fn);
+  Cursor& out = judge::replay_rays(call, fn, ctx.query);
+  glm::vec3 L = out.get<glm::vec3>();
+  judge::all_read(fn, out);
+  return L;
 }
-glm::vec3 estimate_direct_hemisphere(const LightingContext&, const ShadingPoint&, Rng& rng) {
-  return judge::replay_estimate(Fn::estimate_direct_hemisphere, rng);
+glm::vec3 estimate_direct_hemisphere(const LightingContext& ctx, const ShadingPoint&, Rng& rng) {
+  return judge::replay_estimate(Fn::estimate_direct_hemisphere, ctx, rng);
 }
-glm::vec3 estimate_direct_importance(const LightingContext&, const ShadingPoint&, Rng& rng) {
-  return judge::replay_estimate(Fn::estimate_direct_importance, rng);
+glm::vec3 estimate_direct_importance(const LightingContext& ctx, const ShadingPoint&, Rng& rng) {
+  return judge::replay_estimate(Fn::estimate_direct_importance, ctx, rng);
 }
-glm::vec3 one_bounce_radiance(const LightingContext&, const ShadingPoint&, Rng& rng) {
-  return judge::replay_estimate(Fn::one_bounce_radiance, rng);
+glm::vec3 one_bounce_radiance(const LightingContext& ctx, const ShadingPoint&, Rng& rng) {
+  return judge::replay_estimate(Fn::one_bounce_radiance, ctx, rng);
 }
 
 }  // namespace pt

@@ -9,14 +9,15 @@ using judge::Cursor;
 using judge::Fn;
 using judge::JudgeCall;
 
-glm::vec3 direct_radiance(const LightingContext&, const ShadingPoint&, Rng& rng) {
-  return judge::replay_estimate(Fn::direct_radiance, rng);
+glm::vec3 direct_radiance(const LightingContext& ctx, const ShadingPoint&, Rng& rng) {
+  return judge::replay_estimate(Fn::direct_radiance, ctx, rng);
 }
-glm::vec3 at_least_one_bounce_radiance(const LightingContext&, const ShadingPoint&, int, Rng& rng) {
-  return judge::replay_estimate(Fn::at_least_one_bounce_radiance, rng);
+glm::vec3 at_least_one_bounce_radiance(const LightingContext& ctx, const ShadingPoint&, int,
+                                       Rng& rng) {
+  return judge::replay_estimate(Fn::at_least_one_bounce_radiance, ctx, rng);
 }
-glm::vec3 estimate_global_illumination(const LightingContext&, const Ray&, Rng& rng) {
-  return judge::replay_estimate(Fn::estimate_global_illumination, rng);
+glm::vec3 estimate_global_illumination(const LightingContext& ctx, const Ray&, Rng& rng) {
+  return judge::replay_estimate(Fn::estimate_global_illumination, ctx, rng);
 }
 float power_heuristic(int, float, int, float) {
   JudgeCall call(Fn::power_heuristic);
@@ -25,8 +26,8 @@ float power_heuristic(int, float, int, float) {
   judge::all_read(Fn::power_heuristic, out);
   return w;
 }
-glm::vec3 estimate_direct_mis(const LightingContext&, const ShadingPoint&, Rng& rng) {
-  return judge::replay_estimate(Fn::estimate_direct_mis, rng);
+glm::vec3 estimate_direct_mis(const LightingContext& ctx, const ShadingPoint&, Rng& rng) {
+  return judge::replay_estimate(Fn::estimate_direct_mis, ctx, rng);
 }
 
 }  // namespace pt
