@@ -6,8 +6,11 @@
 
 #include <unistd.h>
 
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include <gtest/gtest.h>
 
@@ -129,6 +132,79 @@ TEST(GraderJudgedTests, OneWrongAnswerFailsTheTest) {
   EXPECT_FALSE(o.pass) << "a record with a changed answer passed";
   EXPECT_NE(o.message.find("camera_ray_test.cpp"), std::string::npos)
       << "the judge's own failure, with its file and line, is the message: " << o.message;
+}
+
+/// Part 3's test that a light sample of no radiance costs no shadow ray, its probe `probe`.
+JudgedTest black_light_test(const std::string& probe) {
+  JudgedTest t;
+  t.part = 3;
+  t.step = 4;
+  t.gtest = "importance.a_light_sample_of_no_radiance_traces_no_shadow_ray";
+  t.name = "part3.step4." + t.gtest;
+  t.probe = probe;
+  t.judge = kSecret + "/judge_part3_step4_importance_test";
+  return t;
+}
+
+// The rays an estimator traces are the judge's count: each is a callback the judge traces again.
+// The complete solution's probe passes; the same record with the call's counter moves forged
+// (one shadow ray fewer, as a student's code that puts the test's counter back would claim)
+// fails, and so does one whose rays were answered by another scene.
+TEST(GraderJudgedTests, TheRaysAnEstimatorTracesAreTheJudgesCount) {
+  test::TempFolder dir("pt-judged");
+  const std::string real = kSecret + "/probe_part3_step4_importance_test";
+  ASSERT_TRUE(std::filesystem::exists(real)) << real;
+  JudgedOutcome o = run(black_light_test(real), dir);
+  ASSERT_TRUE(o.pass) << o.message << "\n" << o.student_output;
+  // The real record, taken as the grader takes it.
+  const std::filesystem::path record = dir.path() / "record";
+  ASSERT_EQ(std::system(("PT_RECORD_FD=9 '" + real + "' --gtest_filter=" + black_light_test("").gtest +
+                         " 9>'" + record.string() + "' >/dev/null 2>&1").c_str()),
+            0);
+  std::string bytes;
+  {
+    std::ifstream in(record, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  // Events: kind (1 byte), function (2), which (1), size (4), payload. A return's payload opens
+  // with the number of counters and their moves outside the call's callbacks.
+  auto forged = [&](auto&& change) {
+    std::string b = bytes;
+    int changed = 0;
+    for (size_t at = 0; at + 8 <= b.size();) {
+      uint32_t size;
+      std::memcpy(&size, b.data() + at + 4, 4);
+      if (changed == 0 && change(b, at, size)) ++changed;
+      at += 8 + size;
+    }
+    EXPECT_EQ(changed, 1) << "the record holds no event to change";
+    const std::filesystem::path p = dir.path() / ("forged-" + std::to_string(b.size()));
+    std::ofstream(p, std::ios::binary) << b;
+    std::filesystem::permissions(p, std::filesystem::perms(0644));
+    std::filesystem::permissions(dir.path(), std::filesystem::perms(0755));
+    return script(dir, "forger", "cat '" + p.string() + "' >&$PT_RECORD_FD\nexit 0");
+  };
+  const std::string uncounted = forged([](std::string& b, size_t at, uint32_t size) {
+    if (b[at] != 'R' || size < 4 + 8) return false;
+    uint32_t n;
+    std::memcpy(&n, b.data() + at + 8, 4);
+    if (n == 0) return false;
+    const int64_t fewer = -1;  // the last counter registered: the query's any-hit rays
+    std::memcpy(&b[at + 8 + 4 + 8 * (n - 1)], &fewer, 8);
+    return true;
+  });
+  o = run(black_light_test(uncounted), dir);
+  EXPECT_FALSE(o.pass) << "a record that counts a shadow ray fewer passed";
+  EXPECT_NE(o.message.find("changed a counter of the test's itself"), std::string::npos) << o.message;
+  const std::string lying = forged([](std::string& b, size_t at, uint32_t) {
+    if (b[at] != 'A') return false;  // a ray's answer: "blocked" turned round
+    b[at + 8] = char(b[at + 8] ^ 1);
+    return true;
+  });
+  o = run(black_light_test(lying), dir);
+  EXPECT_FALSE(o.pass) << "a record whose ray was answered otherwise passed";
+  EXPECT_NE(o.message.find("callback answered what the test's callback does not answer"),
+            std::string::npos) << o.message;
 }
 
 // Skipping is the judge's word alone: a probe that prints GoogleTest's skip lines is a failure.
