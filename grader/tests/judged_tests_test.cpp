@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <random>
 
 #include <gtest/gtest.h>
 
@@ -205,6 +206,60 @@ TEST(GraderJudgedTests, TheRaysAnEstimatorTracesAreTheJudgesCount) {
   EXPECT_FALSE(o.pass) << "a record whose ray was answered otherwise passed";
   EXPECT_NE(o.message.find("callback answered what the test's callback does not answer"),
             std::string::npos) << o.message;
+}
+
+// A record is hostile input to the judge: 200 copies of a real one, each with bits flipped, cut
+// short, bytes inserted or a size field made huge, each ends the judge with a verdict (pass, fail,
+// or "the record holds calls the test did not make"), never a crash or a hang. A copy may pass: a
+// changed ray the judge traces again, or a value within the test's tolerance, is another claim
+// the test accepts.
+TEST(GraderJudgedTests, AJudgeGivesAVerdictOnAnyRecord) {
+  test::TempFolder dir("pt-judged-fuzz");
+  const std::string probe = kSecret + "/probe_part3_step4_importance_test";
+  const std::string judge = kSecret + "/judge_part3_step4_importance_test";
+  const std::string filter = "--gtest_filter=" + black_light_test("").gtest;
+  const std::filesystem::path record = dir.path() / "record";
+  ASSERT_EQ(std::system(("PT_RECORD_FD=9 '" + probe + "' " + filter + " 9>'" + record.string() +
+                         "' >/dev/null 2>&1").c_str()),
+            0);
+  std::string bytes;
+  {
+    std::ifstream in(record, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  ASSERT_GT(bytes.size(), 40u);
+  std::mt19937 rng(11);
+  auto below = [&](size_t n) { return size_t(rng() % n); };
+  int verdicts[4] = {0, 0, 0, 0};  // pass, fail, calls not made, other
+  for (int i = 0; i < 200; ++i) {
+    std::string b = bytes;
+    switch (i % 4) {
+      case 0:
+        for (int k = 0; k < 1 + int(below(4)); ++k) b[below(b.size())] ^= char(1 << below(8));
+        break;
+      case 1: b.resize(below(b.size())); break;
+      case 2: b.insert(below(b.size()), std::string(1 + below(16), char(rng()))); break;
+      case 3: {
+        const uint32_t huge = 0xfffffff0u;
+        std::memcpy(&b[below(b.size() - 8) + 4], &huge, 4);
+        break;
+      }
+    }
+    const std::filesystem::path m = dir.path() / "mutated";
+    std::ofstream(m, std::ios::binary | std::ios::trunc) << b;
+    ChildOptions o;
+    o.limits.wall_seconds = 20;
+    o.environment = {"PT_REPLAY_FILE=" + m.string()};
+    const ChildResult r = run_child({judge, filter}, o);
+    ASSERT_TRUE(r.started && !r.timed_out && r.signal == 0)
+        << "mutation " << i << ": " << r.describe() << "\n" << r.output;
+    const int k = r.exit_code == 0 ? 0 : r.exit_code == 1 ? 1 : r.exit_code == 3 ? 2 : 3;
+    ++verdicts[k];
+    EXPECT_NE(k, 3) << "mutation " << i << ": " << r.describe() << "\n" << r.output;
+  }
+  std::printf("200 mutated records: %d pass, %d fail, %d hold calls not made\n", verdicts[0],
+              verdicts[1], verdicts[2]);
+  EXPECT_GT(verdicts[1] + verdicts[2], 100);
 }
 
 // Skipping is the judge's word alone: a probe that prints GoogleTest's skip lines is a failure.
