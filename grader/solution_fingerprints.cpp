@@ -48,8 +48,7 @@ class Filter {
   std::vector<uint64_t> bits_;
 };
 
-/// Calls `found(offset, entry)` for the windows of `data` (a stream fed in pieces) that are
-/// fingerprints; stops when it returns true.
+/// Looks at every window of a stream fed in pieces, for the first that is a fingerprint.
 class Scanner {
  public:
   Scanner(const Fingerprints& prints, const Filter& filter) : prints_(prints), filter_(filter) {}
