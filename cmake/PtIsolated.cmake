@@ -27,6 +27,9 @@ include_guard(GLOBAL)
 
 set(PT_SOLUTION_DIR "" CACHE PATH
     "A copy of the project holding the complete solution, for `grader --isolated` (empty: this tree)")
+# The link options of a program that links a student's objects: no link-time compile of anything
+# an object carries (GCC's linker plugin would run the compiler on it with the grader's rights).
+set(PT_NO_LINK_TIME_CODE $<$<CXX_COMPILER_ID:GNU>:-fno-lto>)
 set(PT_STUB_DIR "" CACHE PATH
     "A folder holding the handout's stubs under parts/, linked for the parts after the graded one")
 
@@ -107,6 +110,7 @@ function(pt_add_isolated_grading)
     add_executable(${exe} ${PROJECT_SOURCE_DIR}/app/pathtracer_main.cpp
                           ${PROJECT_SOURCE_DIR}/app/command_line.cpp)
     target_link_libraries(${exe} PRIVATE ${lib})
+    target_link_options(${exe} PRIVATE ${PT_NO_LINK_TIME_CODE})  # it links the student's objects
   endfunction()
 
   set(solution_objects "")

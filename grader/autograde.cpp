@@ -20,6 +20,7 @@
 
 #include "framework/text/text_file.h"
 #include "grader/build_errors.h"
+#include "grader/elf_object.h"
 #include "grader/bundle.h"
 #include "grader/grade.h"
 #include "grader/handout.h"
@@ -177,6 +178,25 @@ void close_build_after_compile(const AutogradeLayout& L, bool given) {
 
 namespace {
 
+/// The objects the compile of part `part`'s files made (its pt_partN_obj target).
+fs::path objects_dir(const AutogradeLayout& L, int part) {
+  return L.build / "parts" / "CMakeFiles" / ("pt_part" + std::to_string(part) + "_obj.dir");
+}
+std::vector<fs::path> part_objects(const AutogradeLayout& L, int part) {
+  std::vector<fs::path> found;
+  std::error_code ec;
+  for (fs::recursive_directory_iterator it(objects_dir(L, part), ec), end; !ec && it != end;
+       it.increment(ec))
+    if (!it->is_symlink() && it->path().extension() == ".o") found.push_back(it->path());
+  return found;
+}
+/// The project file an object of part `part` was compiled from ("parts/1-raygen/x.cpp").
+std::string source_of_object(const AutogradeLayout& L, int part, const fs::path& object) {
+  std::string rel = object.lexically_relative(objects_dir(L, part)).string();
+  if (rel.size() > 2 && rel.compare(rel.size() - 2, 2, ".o") == 0) rel.resize(rel.size() - 2);
+  return "parts/" + rel;
+}
+
 /// Whether the student's build of a part succeeded, and its error excerpt when not.
 struct BuildOutcome {
   bool ok = false;
@@ -214,7 +234,18 @@ BuildOutcome student_build(int part, const AutogradeLayout& L, const Sandbox& sa
                build_errors(c.output, L.project.string());
     return r;
   }
-  // The link, as the grader: only objects, never a compile.
+  // The link, as the grader: only objects, never a compile. An object that holds link-time code
+  // (or is no relocatable object at all) would have a linker with a compiler plugin compile it,
+  // with the grader's rights: refused, in the grader's words (a section's name is the student's).
+  for (const fs::path& object : part_objects(L, part)) {
+    const std::string why = link_time_code_in(object);
+    if (why.empty()) continue;
+    std::cerr << "autograde: refused: " << why << "\n";
+    r.output = "your code did not build: the object of " + source_of_object(L, part, object) +
+               " holds link-time code or is no machine code, which would make the linker compile "
+               "it with the grader's rights; the grader links only compiled machine code";
+    return r;
+  }
   const std::string programs = "probes_part" + std::to_string(part);
   ChildResult plan = run_child({"ninja", "-C", L.build.string(), "-n", programs}, 120.0);
   if (!plan.ok() || plan.output.find("Building C") != std::string::npos) {

@@ -1,6 +1,7 @@
 #include "grader/solution_fingerprints.h"
 
-#include <elf.h>
+#include "grader/elf_object.h"
+
 #include <fcntl.h>
 #include <grp.h>
 #include <sys/stat.h>
@@ -81,68 +82,6 @@ class Scanner {
   size_t pos_ = 0;
 };
 
-std::string read_binary(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path.string() + ": cannot be read");
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
-/// One executable section of an object: its bytes, and which of them a relocation rewrites.
-struct CodeSection {
-  std::string name;
-  const unsigned char* bytes = nullptr;
-  size_t size = 0;
-  bool in_group = false;
-  std::vector<bool> relocated;
-};
-
-/// The executable sections of the ELF64 relocatable object `image` (read from `path`).
-std::vector<CodeSection> code_sections(const std::string& image, const fs::path& path) {
-  auto bad = [&](const std::string& why) {
-    return std::runtime_error(path.string() + ": not an ELF64 object (" + why + ")");
-  };
-  if (image.size() < sizeof(Elf64_Ehdr) || std::memcmp(image.data(), ELFMAG, SELFMAG) != 0)
-    throw bad("no ELF header");
-  Elf64_Ehdr eh;
-  std::memcpy(&eh, image.data(), sizeof eh);
-  if (eh.e_ident[EI_CLASS] != ELFCLASS64) throw bad("not 64-bit");
-  if (eh.e_shentsize != sizeof(Elf64_Shdr) || eh.e_shoff == 0 ||
-      eh.e_shoff + size_t(eh.e_shnum) * sizeof(Elf64_Shdr) > image.size())
-    throw bad("section headers out of the file");
-  std::vector<Elf64_Shdr> sh(eh.e_shnum);
-  std::memcpy(sh.data(), image.data() + eh.e_shoff, sh.size() * sizeof(Elf64_Shdr));
-  auto inside = [&](const Elf64_Shdr& s) { return s.sh_offset + s.sh_size <= image.size(); };
-  const Elf64_Shdr* names = eh.e_shstrndx < sh.size() ? &sh[eh.e_shstrndx] : nullptr;
-  std::vector<CodeSection> code(sh.size());
-  for (size_t i = 0; i < sh.size(); ++i) {
-    const Elf64_Shdr& s = sh[i];
-    if (s.sh_type != SHT_PROGBITS || !(s.sh_flags & SHF_EXECINSTR) || !inside(s)) continue;
-    CodeSection& c = code[i];
-    if (names && inside(*names) && s.sh_name < names->sh_size)
-      c.name = std::string(image.c_str() + names->sh_offset + s.sh_name);
-    c.bytes = reinterpret_cast<const unsigned char*>(image.data()) + s.sh_offset;
-    c.size = s.sh_size;
-    c.in_group = (s.sh_flags & SHF_GROUP) != 0;
-    c.relocated.assign(c.size, false);
-  }
-  for (const Elf64_Shdr& s : sh) {
-    if ((s.sh_type != SHT_RELA && s.sh_type != SHT_REL) || !inside(s) || s.sh_info >= code.size() ||
-        !code[s.sh_info].bytes)
-      continue;
-    const size_t entry = s.sh_type == SHT_RELA ? sizeof(Elf64_Rela) : sizeof(Elf64_Rel);
-    CodeSection& c = code[s.sh_info];
-    for (size_t at = 0; at + entry <= s.sh_size; at += entry) {
-      Elf64_Rel r;  // r_offset opens both kinds
-      std::memcpy(&r, image.data() + s.sh_offset + at, sizeof r);
-      for (size_t k = 0; k < 8 && r.r_offset + k < c.size; ++k) c.relocated[r.r_offset + k] = true;
-    }
-  }
-  std::vector<CodeSection> out;
-  for (CodeSection& c : code)
-    if (c.bytes) out.push_back(std::move(c));
-  return out;
-}
-
 bool varied(const unsigned char* b) {
   std::set<unsigned char> values(b, b + kFingerprintBytes);
   return values.size() > 8;
@@ -195,24 +134,54 @@ Fingerprints fingerprints_of(const std::vector<fs::path>& solution_objects,
   return prints;
 }
 
-std::vector<Carrier> files_carrying(const Fingerprints& prints, const std::vector<fs::path>& roots,
-                                    WalkCount* count) {
+std::vector<fs::path> regular_files_under(const std::vector<fs::path>& roots) {
+  std::vector<fs::path> files;
+  for (const fs::path& root : roots) {
+    struct stat top;
+    if (lstat(root.c_str(), &top) != 0) continue;
+    if (S_ISREG(top.st_mode)) {
+      files.push_back(root);
+      continue;
+    }
+    if (!S_ISDIR(top.st_mode)) continue;
+    // Folder by folder: one that cannot be read, or an entry that vanishes, is passed over alone.
+    std::vector<fs::path> folders = {root};
+    while (!folders.empty()) {
+      const fs::path folder = folders.back();
+      folders.pop_back();
+      std::error_code ec;
+      for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+        struct stat st;
+        if (lstat(it->path().c_str(), &st) != 0) continue;
+        if (S_ISDIR(st.st_mode) && st.st_dev == top.st_dev) folders.push_back(it->path());
+        if (S_ISREG(st.st_mode)) files.push_back(it->path());
+      }
+    }
+  }
+  return files;
+}
+
+namespace {
+
+/// Reads each of `files` that this process can open, for the first fingerprint it holds.
+std::vector<Carrier> scan_files(const Fingerprints& prints, const std::vector<fs::path>& files,
+                                WalkCount* count) {
   std::vector<Carrier> found;
   WalkCount local;
   WalkCount& n = count ? *count : local;
   if (prints.by_hash.empty()) return found;
   const Filter filter(prints);
   std::vector<unsigned char> buffer(size_t(1) << 20);
-  auto look = [&](const fs::path& path) {
+  for (const fs::path& path : files) {
     const int fd = open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
     if (fd < 0) {
       ++n.unreadable;
-      return;
+      continue;
     }
     struct stat st;
     if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
       close(fd);
-      return;
+      continue;
     }
     ++n.files;
     Scanner scan(prints, filter);
@@ -226,31 +195,22 @@ std::vector<Carrier> files_carrying(const Fingerprints& prints, const std::vecto
       }
     }
     close(fd);
-  };
-  for (const fs::path& root : roots) {
-    struct stat top;
-    if (lstat(root.c_str(), &top) != 0) continue;
-    if (S_ISREG(top.st_mode)) {
-      look(root);
-      continue;
-    }
-    std::error_code ec;
-    fs::recursive_directory_iterator it(root, fs::directory_options::skip_permission_denied, ec), end;
-    for (; !ec && it != end; it.increment(ec)) {
-      struct stat st;
-      if (lstat(it->path().c_str(), &st) != 0) continue;
-      if (S_ISDIR(st.st_mode) && st.st_dev != top.st_dev) {
-        it.disable_recursion_pending();  // another file system mounted here
-        continue;
-      }
-      if (S_ISREG(st.st_mode)) look(it->path());
-    }
   }
   return found;
 }
 
+}  // namespace
+
+std::vector<Carrier> files_carrying(const Fingerprints& prints, const std::vector<fs::path>& roots,
+                                    WalkCount* count) {
+  return scan_files(prints, regular_files_under(roots), count);
+}
+
 std::vector<Carrier> files_carrying_as(long uid, long gid, const Fingerprints& prints,
                                        const std::vector<fs::path>& roots, WalkCount* count) {
+  // Listed as the caller (a folder the user may enter but not list still holds files it can
+  // open by name), opened as the user.
+  const std::vector<fs::path> files = regular_files_under(roots);
   int fds[2];
   if (pipe(fds) != 0) throw std::runtime_error("cannot make a pipe");
   const pid_t child = fork();
@@ -263,7 +223,7 @@ std::vector<Carrier> files_carrying_as(long uid, long gid, const Fingerprints& p
       _exit(2);
     WalkCount n;
     std::string out;
-    for (const Carrier& c : files_carrying(prints, roots, &n))
+    for (const Carrier& c : scan_files(prints, files, &n))
       out += c.path + '\0' + std::to_string(c.offset) + '\0' + c.fingerprint + '\0';
     out += std::to_string(n.files) + '\0' + std::to_string(n.bytes) + '\0' +
            std::to_string(n.unreadable) + '\0';

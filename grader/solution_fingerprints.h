@@ -33,7 +33,7 @@ struct Fingerprints {
 /// own (not COMDAT groups, which hold inline and template code any object may have), with no byte
 /// a relocation rewrites at link time and more than 8 distinct byte values; minus every window
 /// found anywhere in the executable sections of `given_objects` (code that is not the solution's
-/// may compile to the same bytes). Throws naming a file that is not an ELF object.
+/// may compile to the same bytes). Throws naming a file that is not an ELF64 relocatable object.
 Fingerprints fingerprints_of(const std::vector<std::filesystem::path>& solution_objects,
                              const std::vector<std::filesystem::path>& given_objects);
 
@@ -48,14 +48,18 @@ struct WalkCount {
   size_t files = 0, bytes = 0, unreadable = 0;
 };
 
-/// The regular files under `roots` (not following links, never leaving a root's file system)
-/// that hold a fingerprint, each window of every file looked at.
+/// Every regular file under `roots` (a root may be a file), not following links, never leaving
+/// a root's file system; a folder that cannot be read is passed over alone.
+std::vector<std::filesystem::path> regular_files_under(const std::vector<std::filesystem::path>& roots);
+
+/// The regular files under `roots` that hold a fingerprint, each window of every file looked at.
 std::vector<Carrier> files_carrying(const Fingerprints& prints,
                                     const std::vector<std::filesystem::path>& roots,
                                     WalkCount* count = nullptr);
 
-/// The same walk made by a child process that is user `uid` with no group but `gid`: only what
-/// that user can open is read. Throws when the child cannot become the user.
+/// The same walk, the files listed by the caller and opened by a child process that is user
+/// `uid` with no group but `gid`: every file that user can open is read, including those in
+/// folders it may enter but not list. Throws when the child cannot become the user.
 std::vector<Carrier> files_carrying_as(long uid, long gid, const Fingerprints& prints,
                                        const std::vector<std::filesystem::path>& roots,
                                        WalkCount* count = nullptr);

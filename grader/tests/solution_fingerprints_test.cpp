@@ -1,11 +1,12 @@
 // The solution's fingerprints: found in what copies or links the solution's code (a program that
 // links Part 1, an object's bytes hidden in noise), never in the given code's objects, and, walked
-// as another user, only in the files that user can open.
+// as another user, in exactly the files that user can open (in a folder it cannot list too).
 #include "grader/solution_fingerprints.h"
 
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <fstream>
 #include <iterator>
 #include <random>
@@ -103,15 +104,23 @@ TEST_F(SolutionFingerprints, AnotherUserFindsOnlyWhatItCanOpen) {
   std::ofstream(dir.path() / "closed", std::ios::binary) << "y" + code;
   fs::permissions(dir.path() / "open", fs::perms(0644));
   fs::permissions(dir.path() / "closed", fs::perms(0600));
+  // A folder the user may enter but not list: its readable file can still be opened by name.
+  fs::create_directories(dir.path() / "unlisted");
+  std::ofstream(dir.path() / "unlisted" / "by-name", std::ios::binary) << "zz" + code;
+  fs::permissions(dir.path() / "unlisted" / "by-name", fs::perms(0644));
+  fs::permissions(dir.path() / "unlisted", fs::perms(0711));
   WalkCount n;
   const long uid = kFirstStudentUid + kUidsPerSlot * (kSlots - 1);  // a slot's last uid
-  const std::vector<Carrier> found = files_carrying_as(uid, kStudentGroup, prints_, {dir.path()}, &n);
-  ASSERT_EQ(found.size(), 1u);
+  std::vector<Carrier> found = files_carrying_as(uid, kStudentGroup, prints_, {dir.path()}, &n);
+  ASSERT_EQ(found.size(), 2u);
+  std::sort(found.begin(), found.end(), [](const Carrier& a, const Carrier& b) { return a.path < b.path; });
   EXPECT_EQ(found[0].path, (dir.path() / "open").string());
   EXPECT_EQ(found[0].offset, 1u);
+  EXPECT_EQ(found[1].path, (dir.path() / "unlisted" / "by-name").string());
+  EXPECT_EQ(found[1].offset, 2u);
   EXPECT_EQ(n.unreadable, 1u);
-  // As root, both.
-  EXPECT_EQ(files_carrying(prints_, {dir.path()}).size(), 2u);
+  // As root, all three.
+  EXPECT_EQ(files_carrying(prints_, {dir.path()}).size(), 3u);
 }
 
 TEST(SolutionFingerprintsInput, AFileThatIsNoObjectIsNamed) {
@@ -121,7 +130,7 @@ TEST(SolutionFingerprintsInput, AFileThatIsNoObjectIsNamed) {
     fingerprints_of({dir.path() / "notes.o"}, {});
     FAIL() << "no error";
   } catch (const std::exception& e) {
-    EXPECT_NE(std::string(e.what()).find("notes.o: not an ELF64 object"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("notes.o: not an ELF64 relocatable object"), std::string::npos)
         << e.what();
   }
 }

@@ -349,12 +349,14 @@ TEST_F(GraderBundle, CheatersGetNothingForWhatTheyAttack) {
   std::vector<std::vector<std::pair<std::string, std::string>>> groups;
   auto& spheres = by_file[kSphere];
   auto& triangles = by_file[kTriangle];
-  for (auto it = spheres.begin(); it != spheres.end(); ++it)
-    if (it->first == "read_solution") {
-      groups.push_back({*it});
-      spheres.erase(it);
-      break;
-    }
+  // link_time_code's object is refused before the link: its part is 0 too, and it goes alone.
+  for (const char* alone : {"read_solution", "link_time_code"})
+    for (auto it = spheres.begin(); it != spheres.end(); ++it)
+      if (it->first == alone) {
+        groups.push_back({*it});
+        spheres.erase(it);
+        break;
+      }
   for (size_t i = 0; i < std::max(spheres.size(), triangles.size()); ++i) {
     groups.emplace_back();
     if (i < spheres.size()) groups.back().push_back(spheres[i]);
@@ -382,6 +384,12 @@ TEST_F(GraderBundle, CheatersGetNothingForWhatTheyAttack) {
       EXPECT_DOUBLE_EQ(score, 0.0) << outputs(r);
       EXPECT_NE(all.find("did not build"), std::string::npos) << outputs(r);
       EXPECT_NE(all.find("Permission denied"), std::string::npos) << outputs(r);
+      continue;
+    }
+    if (group.size() == 1 && group[0].first == "link_time_code") {
+      // Refused before the grader's link: no compiler ever runs on it with the grader's rights.
+      EXPECT_DOUBLE_EQ(score, 0.0) << outputs(r);
+      EXPECT_NE(all.find("holds link-time code or is no machine code"), std::string::npos) << outputs(r);
       continue;
     }
     std::map<std::string, double> steps = step_scores(r);
