@@ -11,6 +11,7 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <regex>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -339,6 +340,8 @@ void autograde_setup(const std::string& root, const std::string& grader_exe, int
   for (const PartSpec& spec : manifest.parts) {
     targets.push_back("judges_part" + std::to_string(spec.part));
     targets.push_back("probes_part" + std::to_string(spec.part));
+    // Every part's stubs compiled apart: the given code the fingerprints are told from.
+    targets.push_back("pt_stub_part" + std::to_string(spec.part) + "_obj");
   }
   std::vector<std::string> argv = {"cmake", "--build", L.build.string(), "-j",
                                    std::to_string(std::max(1, jobs)), "--target"};
@@ -368,14 +371,19 @@ void autograde_setup(const std::string& root, const std::string& grader_exe, int
 
 std::string check_no_solution_readable(const AutogradeLayout& L) {
   if (geteuid() != 0) return "not root: the walk as the student's user was not made";
-  // The solution's objects, and every other object of the build: the given code's and the stubs'.
+  // The solution's objects, and the given code's and the stubs' (set-up compiles every part's
+  // stubs apart, pt_stub_partN_obj). The part folders' own objects are left out: after a grading
+  // they are the last submission's, which may be the solution's own code.
   std::vector<fs::path> solution, given;
+  static const std::regex part_objects("/CMakeFiles/pt_part[0-9]+_obj\\.dir/");
   std::error_code ec;
   for (fs::recursive_directory_iterator it(L.build, ec), end; !ec && it != end; it.increment(ec)) {
     if (!it->is_regular_file() || it->path().extension() != ".o") continue;
-    const bool of_solution =
-        it->path().string().find("/CMakeFiles/pt_solution_part") != std::string::npos;
-    (of_solution ? solution : given).push_back(it->path());
+    const std::string path = it->path().string();
+    if (path.find("/CMakeFiles/pt_solution_part") != std::string::npos)
+      solution.push_back(it->path());
+    else if (!std::regex_search(path, part_objects))
+      given.push_back(it->path());
   }
   if (solution.empty())
     throw std::runtime_error(secret_of(L).string() + ": no objects of the solution to take prints of");

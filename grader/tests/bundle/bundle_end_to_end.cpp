@@ -821,6 +821,13 @@ TEST_F(GraderBundle, ZyNoFileTheStudentCanOpenCarriesTheSolution) {
   std::string line;
   ASSERT_NO_THROW(line = check_no_solution_readable(L));
   std::printf("%s\n", line.c_str());
+  // The same fingerprints as at set-up: the submissions graded since are not taken for given code.
+  const std::regex prints("carries the solution's code \\(([0-9]+) fingerprints");
+  std::smatch at_setup, now;
+  const std::string log = bundle_->log();
+  ASSERT_TRUE(std::regex_search(log, at_setup, prints));
+  ASSERT_TRUE(std::regex_search(line, now, prints));
+  EXPECT_EQ(now[1].str(), at_setup[1].str());
   fs::path object;
   for (const fs::path& f : files_under(L.build / "secret" / "CMakeFiles"))
     if (f.string().find("pt_solution_part3_obj") != std::string::npos && f.extension() == ".o") object = f;
