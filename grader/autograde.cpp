@@ -191,6 +191,12 @@ std::vector<fs::path> part_objects(const AutogradeLayout& L, int part) {
     if (!it->is_symlink() && it->path().extension() == ".o") found.push_back(it->path());
   return found;
 }
+/// Removes what the compile of part `part`'s files made.
+void remove_part_objects(const AutogradeLayout& L, int part) {
+  std::error_code ec;
+  for (const fs::path& object : part_objects(L, part)) fs::remove(object, ec);
+}
+
 /// The project file an object of part `part` was compiled from ("parts/1-raygen/x.cpp").
 std::string source_of_object(const AutogradeLayout& L, int part, const fs::path& object) {
   std::string rel = object.lexically_relative(objects_dir(L, part)).string();
@@ -473,6 +479,9 @@ int autograde(const std::string& root, const std::vector<int>& parts,
     int values_left = kValuesPerResults;
     options.quote_budget = &values_left;
     remove_part_programs(L);
+    // No compile sees what an earlier one made: the objects of any part's files (an earlier
+    // submission's, in a root graded twice) are gone before the first compile and after each part.
+    for (const PartSpec& spec : manifest.parts) remove_part_objects(L, spec.part);
     std::vector<PartResult> all;
     for (const PartSpec& spec : manifest.parts) {
       if (!parts.empty() && std::find(parts.begin(), parts.end(), spec.part) == parts.end())
@@ -483,8 +492,10 @@ int autograde(const std::string& root, const std::vector<int>& parts,
         std::cerr << "autograde: part " << spec.part << ": grading\n";
         all.push_back(grade_part(manifest, spec.part, options));
         remove_part_programs(L);
+        remove_part_objects(L, spec.part);
       } else {
         remove_part_programs(L);
+        remove_part_objects(L, spec.part);
         PartResult r;
         r.part = spec.part;
         r.built = false;
