@@ -405,7 +405,7 @@ std::string check_no_solution_readable(const AutogradeLayout& L) {
   // A uid of the first slot, which owns nothing: what any student's process can open.
   const long uid = kFirstStudentUid;
   auto walk = [&](const char* when, WalkCount* n) {
-    const std::vector<Carrier> found = files_carrying_as(uid, kStudentGroup, prints, roots, n);
+    const std::vector<Carrier> found = files_carrying_as(uid, prints, roots, n);
     if (found.empty()) return;
     std::string list;
     for (size_t i = 0; i < found.size() && i < 10; ++i)

@@ -87,32 +87,49 @@ void keep_shared_places_from_students(long some_uid) {
     }
     checked.push_back(p);
   }
-  int pipe_fds[2];
-  if (pipe(pipe_fds) != 0) throw std::runtime_error("cannot make a pipe");
-  pid_t child = fork();
-  if (child == 0) {
-    close(pipe_fds[0]);
-    gid_t group = gid_t(kStudentGroup);
-    if (setgroups(1, &group) != 0 || setgid(gid_t(some_uid)) != 0 || setuid(uid_t(some_uid)) != 0)
-      _exit(2);
+  const std::string writable = as_student_user(some_uid, [&] {
+    std::string found;
     for (const std::string& p : checked)
-      if (access(p.c_str(), W_OK) == 0) (void)!write(pipe_fds[1], (p + "\n").data(), p.size() + 1);
-    _exit(0);
-  }
-  close(pipe_fds[1]);
-  std::string writable;
-  char buf[4096];
-  for (ssize_t n; (n = read(pipe_fds[0], buf, sizeof buf)) > 0;) writable.append(buf, size_t(n));
-  close(pipe_fds[0]);
-  int status = 0;
-  waitpid(child, &status, 0);
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    throw std::runtime_error("cannot check what the student's user may write");
+      if (access(p.c_str(), W_OK) == 0) found += p + "\n";
+    return found;
+  });
   if (!writable.empty())
     throw std::runtime_error("the student's user could still write:\n" + writable);
 }
 
 }  // namespace
+
+std::string as_student_user(long uid, const std::function<std::string()>& work) {
+  int fds[2];
+  if (pipe(fds) != 0) throw std::runtime_error("cannot make a pipe");
+  const pid_t child = fork();
+  if (child < 0) throw std::runtime_error("cannot fork");
+  if (child == 0) {
+    close(fds[0]);
+    const gid_t group = gid_t(kStudentGroup);
+    if (setgroups(1, &group) != 0 || setgid(gid_t(uid)) != 0 || setuid(uid_t(uid)) != 0 ||
+        getuid() != uid_t(uid))
+      _exit(2);
+    const std::string out = work();
+    for (size_t at = 0; at < out.size();) {
+      const ssize_t w = write(fds[1], out.data() + at, out.size() - at);
+      if (w <= 0) _exit(3);
+      at += size_t(w);
+    }
+    _exit(0);
+  }
+  close(fds[1]);
+  std::string got;
+  char buf[65536];
+  for (ssize_t r; (r = read(fds[0], buf, sizeof buf)) > 0;) got.append(buf, size_t(r));
+  close(fds[0]);
+  int status = 0;
+  waitpid(child, &status, 0);
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw std::runtime_error("a process as user " + std::to_string(uid) + " failed (status " +
+                             std::to_string(status) + ")");
+  return got;
+}
 
 bool kernel_gives_namespaces() {
   static const bool gives = [] {

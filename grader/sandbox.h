@@ -3,6 +3,7 @@
 // is only data for the grader's own judges (grader/judged_tests.h).
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -76,6 +77,11 @@ struct Sandbox {
   /// and TMPDIR pointing at it.
   ChildOptions options(const std::string& scratch, double wall_seconds) const;
 };
+
+/// Runs `work` in a child of this process that is user `uid` (group `uid`, and the students'
+/// group kStudentGroup) and returns what it returned: what that user can read or write, asked
+/// without an exec. Throws when the child cannot become the user or does not end well.
+std::string as_student_user(long uid, const std::function<std::string()>& work);
 
 /// Whether this process can give a child mount, IPC and network namespaces (root, and no seccomp
 /// profile refusing them). Asked once.

@@ -1,11 +1,10 @@
 #include "grader/solution_fingerprints.h"
 
 #include "grader/elf_object.h"
+#include "grader/sandbox.h"
 
 #include <fcntl.h>
-#include <grp.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstring>
@@ -206,44 +205,19 @@ std::vector<Carrier> files_carrying(const Fingerprints& prints, const std::vecto
   return scan_files(prints, regular_files_under(roots), count);
 }
 
-std::vector<Carrier> files_carrying_as(long uid, long gid, const Fingerprints& prints,
+std::vector<Carrier> files_carrying_as(long uid, const Fingerprints& prints,
                                        const std::vector<fs::path>& roots, WalkCount* count) {
   // Listed as the caller (a folder the user may enter but not list still holds files it can
   // open by name), opened as the user.
   const std::vector<fs::path> files = regular_files_under(roots);
-  int fds[2];
-  if (pipe(fds) != 0) throw std::runtime_error("cannot make a pipe");
-  const pid_t child = fork();
-  if (child < 0) throw std::runtime_error("cannot fork");
-  if (child == 0) {
-    close(fds[0]);
-    const gid_t group = gid_t(gid);
-    if (setgroups(1, &group) != 0 || setgid(gid_t(uid)) != 0 || setuid(uid_t(uid)) != 0 ||
-        getuid() != uid_t(uid))
-      _exit(2);
+  const std::string got = as_student_user(uid, [&] {
     WalkCount n;
     std::string out;
     for (const Carrier& c : scan_files(prints, files, &n))
       out += c.path + '\0' + std::to_string(c.offset) + '\0' + c.fingerprint + '\0';
-    out += std::to_string(n.files) + '\0' + std::to_string(n.bytes) + '\0' +
+    return out + std::to_string(n.files) + '\0' + std::to_string(n.bytes) + '\0' +
            std::to_string(n.unreadable) + '\0';
-    for (size_t at = 0; at < out.size();) {
-      const ssize_t w = write(fds[1], out.data() + at, out.size() - at);
-      if (w <= 0) _exit(3);
-      at += size_t(w);
-    }
-    _exit(0);
-  }
-  close(fds[1]);
-  std::string got;
-  char buf[65536];
-  for (ssize_t r; (r = read(fds[0], buf, sizeof buf)) > 0;) got.append(buf, size_t(r));
-  close(fds[0]);
-  int status = 0;
-  waitpid(child, &status, 0);
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    throw std::runtime_error("the walk as user " + std::to_string(uid) + " failed (status " +
-                             std::to_string(status) + ")");
+  });
   std::vector<std::string> fields;
   for (size_t at = 0; at < got.size();) {
     const size_t end = got.find('\0', at);

@@ -58,9 +58,10 @@ std::vector<Carrier> files_carrying(const Fingerprints& prints,
                                     WalkCount* count = nullptr);
 
 /// The same walk, the files listed by the caller and opened by a child process that is user
-/// `uid` with no group but `gid`: every file that user can open is read, including those in
-/// folders it may enter but not list. Throws when the child cannot become the user.
-std::vector<Carrier> files_carrying_as(long uid, long gid, const Fingerprints& prints,
+/// `uid` as a student's process is (as_student_user, grader/sandbox.h): every file that user can
+/// open is read, including those in folders it may enter but not list. Throws when the child
+/// cannot become the user.
+std::vector<Carrier> files_carrying_as(long uid, const Fingerprints& prints,
                                        const std::vector<std::filesystem::path>& roots,
                                        WalkCount* count = nullptr);
 

@@ -25,16 +25,24 @@ const std::string kSecret = GRADER_SECRET_DIR;
 
 int own_slot() { return 2000 + int(::getpid() % 30000); }
 
-/// The camera test of Part 1, with its real judge and `probe` in its probe's place.
-JudgedTest camera_test(const std::string& probe) {
+/// Test `gtest` of part `part`'s step `step` (NAME), with its real judge and `probe` in its
+/// probe's place.
+JudgedTest judged(int part, int step, const std::string& name, const std::string& gtest,
+                  const std::string& probe) {
   JudgedTest t;
-  t.part = 1;
-  t.step = 1;
-  t.gtest = "camera_ray.corners_match_the_field_of_view";
-  t.name = "part1.step1." + t.gtest;
+  t.part = part;
+  t.step = step;
+  t.gtest = gtest;
+  t.name = "part" + std::to_string(part) + ".step" + std::to_string(step) + "." + gtest;
   t.probe = probe;
-  t.judge = kSecret + "/judge_part1_step1_camera_ray_test";
+  t.judge = kSecret + "/judge_part" + std::to_string(part) + "_step" + std::to_string(step) + "_" +
+            name + "_test";
   return t;
+}
+
+/// The camera test of Part 1.
+JudgedTest camera_test(const std::string& probe) {
+  return judged(1, 1, "camera_ray", "camera_ray.corners_match_the_field_of_view", probe);
 }
 
 JudgedOutcome run(const JudgedTest& t, const test::TempFolder& dir) {
@@ -135,16 +143,10 @@ TEST(GraderJudgedTests, OneWrongAnswerFailsTheTest) {
       << "the judge's own failure, with its file and line, is the message: " << o.message;
 }
 
-/// Part 3's test that a light sample of no radiance costs no shadow ray, its probe `probe`.
+/// Part 3's test that a light sample of no radiance costs no shadow ray.
 JudgedTest black_light_test(const std::string& probe) {
-  JudgedTest t;
-  t.part = 3;
-  t.step = 4;
-  t.gtest = "importance.a_light_sample_of_no_radiance_traces_no_shadow_ray";
-  t.name = "part3.step4." + t.gtest;
-  t.probe = probe;
-  t.judge = kSecret + "/judge_part3_step4_importance_test";
-  return t;
+  return judged(3, 4, "importance", "importance.a_light_sample_of_no_radiance_traces_no_shadow_ray",
+                probe);
 }
 
 // The rays an estimator traces are the judge's count: each is a callback the judge traces again.

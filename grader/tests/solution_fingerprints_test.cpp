@@ -111,7 +111,7 @@ TEST_F(SolutionFingerprints, AnotherUserFindsOnlyWhatItCanOpen) {
   fs::permissions(dir.path() / "unlisted", fs::perms(0711));
   WalkCount n;
   const long uid = kFirstStudentUid + kUidsPerSlot * (kSlots - 1);  // a slot's last uid
-  std::vector<Carrier> found = files_carrying_as(uid, kStudentGroup, prints_, {dir.path()}, &n);
+  std::vector<Carrier> found = files_carrying_as(uid, prints_, {dir.path()}, &n);
   ASSERT_EQ(found.size(), 2u);
   std::sort(found.begin(), found.end(), [](const Carrier& a, const Carrier& b) { return a.path < b.path; });
   EXPECT_EQ(found[0].path, (dir.path() / "open").string());
