@@ -11,7 +11,7 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
-#include <regex>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -380,15 +380,17 @@ std::string check_no_solution_readable(const AutogradeLayout& L) {
   // The solution's objects, and the given code's and the stubs' (set-up compiles every part's
   // stubs apart, pt_stub_partN_obj). The part folders' own objects are left out: after a grading
   // they are the last submission's, which may be the solution's own code.
+  std::set<fs::path> of_parts;
+  for (const PartSpec& spec : read_manifest((L.project / "reference" / "manifest.json").string()).parts)
+    for (const fs::path& object : part_objects(L, spec.part)) of_parts.insert(object);
   std::vector<fs::path> solution, given;
-  static const std::regex part_objects("/CMakeFiles/pt_part[0-9]+_obj\\.dir/");
   std::error_code ec;
   for (fs::recursive_directory_iterator it(L.build, ec), end; !ec && it != end; it.increment(ec)) {
-    if (!it->is_regular_file() || it->path().extension() != ".o") continue;
-    const std::string path = it->path().string();
-    if (path.find("/CMakeFiles/pt_solution_part") != std::string::npos)
+    if (!it->is_regular_file() || it->path().extension() != ".o" || of_parts.count(it->path()))
+      continue;
+    if (it->path().string().find("/CMakeFiles/pt_solution_part") != std::string::npos)
       solution.push_back(it->path());
-    else if (!std::regex_search(path, part_objects))
+    else
       given.push_back(it->path());
   }
   if (solution.empty())
@@ -491,11 +493,10 @@ int autograde(const std::string& root, const std::vector<int>& parts,
       if (built.ok) {
         std::cerr << "autograde: part " << spec.part << ": grading\n";
         all.push_back(grade_part(manifest, spec.part, options));
-        remove_part_programs(L);
-        remove_part_objects(L, spec.part);
-      } else {
-        remove_part_programs(L);
-        remove_part_objects(L, spec.part);
+      }
+      remove_part_programs(L);
+      remove_part_objects(L, spec.part);
+      if (!built.ok) {
         PartResult r;
         r.part = spec.part;
         r.built = false;

@@ -7,9 +7,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <array>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <set>
 #include <stdexcept>
 
@@ -48,13 +47,15 @@ class Filter {
   std::vector<uint64_t> bits_;
 };
 
-/// Looks at every window of a stream fed in pieces, for the first that is a fingerprint.
+/// Looks at every window of a stream fed in pieces for the fingerprints it holds.
 class Scanner {
  public:
   Scanner(const Fingerprints& prints, const Filter& filter) : prints_(prints), filter_(filter) {}
 
-  /// Feeds `n` more bytes; returns the offset of the first fingerprint's window, or -1.
-  long long feed(const unsigned char* data, size_t n, const Fingerprints::Entry** which) {
+  /// Feeds `n` more bytes, calling `hit(offset, entry)` for each window (offset in the stream)
+  /// that is a fingerprint, until it returns true; returns whether it did.
+  template <class Hit>
+  bool feed(const unsigned char* data, size_t n, Hit&& hit) {
     for (size_t i = 0; i < n; ++i) {
       const unsigned char in = data[i];
       const unsigned char out = ring_[pos_ % kFingerprintBytes];
@@ -66,11 +67,9 @@ class Scanner {
       if (it == prints_.by_hash.end()) continue;
       std::array<unsigned char, kFingerprintBytes> window;
       for (size_t k = 0; k < kFingerprintBytes; ++k) window[k] = ring_[(pos_ + k) % kFingerprintBytes];
-      if (window != it->second.bytes) continue;
-      *which = &it->second;
-      return (long long)(pos_ - kFingerprintBytes);
+      if (window == it->second.bytes && hit(pos_ - kFingerprintBytes, it->second)) return true;
     }
-    return -1;
+    return false;
   }
 
  private:
@@ -113,20 +112,11 @@ Fingerprints fingerprints_of(const std::vector<fs::path>& solution_objects,
   std::set<uint64_t> shared;
   for (const fs::path& path : given_objects) {
     const std::string image = read_binary(path);
-    for (const CodeSection& c : code_sections(image, path)) {
-      if (c.size < kFingerprintBytes) continue;
-      uint64_t h = hash_window(c.bytes);
-      for (size_t at = 0;; ++at) {
-        if (filter.maybe(h)) {
-          auto it = prints.by_hash.find(h);
-          if (it != prints.by_hash.end() &&
-              std::memcmp(it->second.bytes.data(), c.bytes + at, kFingerprintBytes) == 0)
-            shared.insert(h);
-        }
-        if (at + kFingerprintBytes >= c.size) break;
-        h = h * kBase + c.bytes[at + kFingerprintBytes] - c.bytes[at] * kOutgoing;
-      }
-    }
+    for (const CodeSection& c : code_sections(image, path))
+      Scanner(prints, filter).feed(c.bytes, c.size, [&](size_t, const Fingerprints::Entry& e) {
+        shared.insert(hash_window(e.bytes.data()));
+        return false;
+      });
   }
   for (uint64_t h : shared) prints.by_hash.erase(h);
   prints.dropped = shared.size();
@@ -186,12 +176,12 @@ std::vector<Carrier> scan_files(const Fingerprints& prints, const std::vector<fs
     Scanner scan(prints, filter);
     for (ssize_t got; (got = read(fd, buffer.data(), buffer.size())) > 0;) {
       n.bytes += size_t(got);
-      const Fingerprints::Entry* which = nullptr;
-      const long long hit = scan.feed(buffer.data(), size_t(got), &which);
-      if (hit >= 0) {
-        found.push_back({path.string(), size_t(hit), which->source});
-        break;
-      }
+      const bool hit = scan.feed(buffer.data(), size_t(got),
+                                 [&](size_t at, const Fingerprints::Entry& e) {
+                                   found.push_back({path.string(), at, e.source});
+                                   return true;
+                                 });
+      if (hit) break;
     }
     close(fd);
   }
